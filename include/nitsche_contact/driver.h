@@ -1,0 +1,76 @@
+// The common contact driver: refinement cycles with nested iteration, the
+// nonlinear loop (fixed point or generalized Newton, with line search as a
+// fallback when the contact status cycles), logging, the convergence table,
+// summary.json, the deflection profile and the ParaView records.
+#ifndef nitsche_contact_driver_h
+#define nitsche_contact_driver_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
+
+#include <nitsche_contact/model.h>
+#include <nitsche_contact/parameters.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace NitscheContact
+{
+  /// Wall-clock seconds per phase of one cycle.
+  struct PhaseTimes
+  {
+    double setup    = 0.;
+    double assembly = 0.;
+    double solve    = 0.;
+    double postprocess = 0.;
+    double output   = 0.;
+  };
+
+  class ContactDriver
+  {
+  public:
+    ContactDriver(const CommonParameters &prm, MPI_Comm comm);
+
+    /// Run all cycles; throws ConvergenceFailure if a cycle does not
+    /// converge (unless allowed in the parameters).
+    void
+    run(ContactModel &model);
+
+  private:
+    /// One nonlinear solve on the current mesh; returns iterations used.
+    unsigned int
+    solve_nonlinear(ContactModel &model, unsigned int cycle, PhaseTimes &t,
+                    bool &converged);
+
+    void
+    write_profile(const ContactModel &model, unsigned int cycle) const;
+
+    void
+    write_summary(const ContactModel &model) const;
+
+    void
+    write_tables() const;
+
+    const CommonParameters    &prm;
+    MPI_Comm                   comm;
+    dealii::ConditionalOStream pcout;
+
+    struct CycleRecord
+    {
+      unsigned int   cycle;
+      std::uint64_t  n_dofs;
+      double         h;
+      unsigned int   iterations;
+      bool           converged;
+      ContactCounts  counts;
+      CycleResults   results;
+      PhaseTimes     times;
+    };
+    std::vector<CycleRecord>                           records;
+    std::map<std::string, std::vector<std::pair<double, std::string>>>
+      pvd_entries;
+  };
+} // namespace NitscheContact
+
+#endif

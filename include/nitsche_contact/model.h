@@ -1,0 +1,126 @@
+// The interface between the common contact driver and a model.
+//
+// The driver owns the refinement cycles and the nonlinear loop; it never sees
+// a dimension, a finite element or a matrix. A model owns its mesh, its
+// finite element space, its linear algebra and its current iterate U. One
+// nonlinear iteration is
+//
+//   status = model.assemble(scheme, true);     // R(U), K(U), contact status
+//   model.solve_linear();                      // K dU = -R
+//   model.apply_increment(1.);                 // U <- U + dU
+//
+// and line search calls apply_increment(t) / assemble(scheme, false) with
+// other step lengths t (apply_increment always starts from the iterate at
+// which solve_linear() was called).
+#ifndef nitsche_contact_model_h
+#define nitsche_contact_model_h
+
+#include <deal.II/base/point.h>
+
+#include <nitsche_contact/nitsche_kernel.h>
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace NitscheContact
+{
+  /// Contact status counts of one evaluation (summed over MPI ranks).
+  struct ContactCounts
+  {
+    unsigned long n_points  = 0; ///< contact quadrature points in all
+    unsigned long n_active  = 0; ///< points in contact (stick + slip)
+    unsigned long n_stick   = 0;
+    unsigned long n_slip    = 0;
+    unsigned long n_changed = 0; ///< points whose status changed since the
+                                 ///< previous evaluation with a matrix
+    std::uint64_t hash      = 0; ///< fingerprint of the whole status field
+    double        residual_norm = 0.; ///< l2 norm of the residual vector
+  };
+
+  /// Quantities the driver reports for a converged cycle.
+  struct CycleResults
+  {
+    double                           contact_area   = 0.;
+    double                           contact_force  = 0.;
+    double                           min_deflection = 0.;
+    double                           max_deflection = 0.;
+    std::vector<double>              probes;
+    /// Named errors against the reference solution (e.g. "L2", "H1").
+    std::vector<std::pair<std::string, double>> errors;
+    /// Further model-specific scalars for summary.json.
+    std::vector<std::pair<std::string, double>> extra;
+  };
+
+  class ContactModel
+  {
+  public:
+    virtual ~ContactModel() = default;
+
+    /// Short name: "elasticity", "mindlin", "kirchhoff".
+    virtual std::string
+    name() const = 0;
+
+    /// Main parameters of the model as (key, value) strings for the log and
+    /// summary.json.
+    virtual std::vector<std::pair<std::string, std::string>>
+    description() const = 0;
+
+    /// Cycle 0: build the coarse mesh and refine it initially, set up the
+    /// space and start from U = 0. Later cycles: refine globally and carry
+    /// the previous solution onto the new mesh (nested iteration).
+    virtual void
+    setup_cycle(unsigned int cycle) = 0;
+
+    virtual std::uint64_t
+    n_dofs() const = 0;
+
+    /// Representative cell size (largest in-plane cell side).
+    virtual double
+    mesh_size() const = 0;
+
+    /// Evaluate the contact status, the residual and, if with_matrix, the
+    /// linear system of the chosen scheme at the current iterate. With
+    /// with_matrix the status becomes the reference for n_changed of the
+    /// next call.
+    virtual ContactCounts
+    assemble(NonlinearScheme scheme, bool with_matrix) = 0;
+
+    /// Solve the assembled system for the increment; returns the number of
+    /// linear iterations (0 for direct solvers).
+    virtual unsigned int
+    solve_linear() = 0;
+
+    /// U = U_base + step * dU, where U_base is the iterate at the time of
+    /// the last solve_linear().
+    virtual void
+    apply_increment(double step) = 0;
+
+    /// Energy norms (bulk elastic energy, no contact terms) of the last
+    /// increment dU and of the current iterate U.
+    virtual double
+    increment_energy_norm() const = 0;
+    virtual double
+    solution_energy_norm() const = 0;
+
+    /// Contact area and force, extreme deflections, probe values, errors.
+    virtual CycleResults
+    postprocess(const std::vector<dealii::Point<2>> &probes) = 0;
+
+    /// Deflection (u3 on the mid-plane / w) at in-plane points; NaN where a
+    /// point lies outside the plate. Called on all ranks, result on all.
+    virtual std::vector<double>
+    deflection_at(const std::vector<dealii::Point<2>> &points) const = 0;
+
+    /// Write graphical output of this cycle. Returns (series, file) pairs:
+    /// for each series (e.g. "solution", "contact") the master record
+    /// (.pvtu) relative to the output directory; the driver keeps one .pvd
+    /// file per series.
+    virtual std::vector<std::pair<std::string, std::string>>
+    write_graphical_output(const std::string &directory,
+                           unsigned int       cycle) const = 0;
+  };
+} // namespace NitscheContact
+
+#endif

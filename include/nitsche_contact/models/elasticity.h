@@ -1,0 +1,120 @@
+// Model 1: 3D linear elasticity with unilateral contact and Coulomb
+// friction on the bottom face x3 = -t/2 against a rigid obstacle, by
+// Nitsche's method (theta = 1, 0, -1), on a distributed hexahedral mesh with
+// Q1 or Q2 Lagrange elements and Trilinos linear algebra.
+#ifndef nitsche_contact_models_elasticity_h
+#define nitsche_contact_models_elasticity_h
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <nitsche_contact/model.h>
+#include <nitsche_contact/parameters.h>
+
+#include <memory>
+
+namespace NitscheContact
+{
+  class ElasticityModel : public ContactModel
+  {
+  public:
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    ElasticityModel(const CommonParameters   &common,
+                    dealii::ParameterHandler &prm,
+                    MPI_Comm                  comm);
+
+    std::string
+    name() const override
+    {
+      return "elasticity";
+    }
+    std::vector<std::pair<std::string, std::string>>
+    description() const override;
+    void
+    setup_cycle(unsigned int cycle) override;
+    std::uint64_t
+    n_dofs() const override;
+    double
+    mesh_size() const override;
+    ContactCounts
+    assemble(NonlinearScheme scheme, bool with_matrix) override;
+    unsigned int
+    solve_linear() override;
+    void
+    apply_increment(double step) override;
+    double
+    increment_energy_norm() const override;
+    double
+    solution_energy_norm() const override;
+    CycleResults
+    postprocess(const std::vector<dealii::Point<2>> &probes) override;
+    std::vector<double>
+    deflection_at(const std::vector<dealii::Point<2>> &points) const override;
+    std::vector<std::pair<std::string, std::string>>
+    write_graphical_output(const std::string &directory,
+                           unsigned int       cycle) const override;
+
+    /// Boundary id of the contact face (bottom, x3 = -t/2).
+    static constexpr dealii::types::boundary_id contact_id = 4;
+
+  private:
+    void
+    make_grid();
+    void
+    setup_dofs();
+    void
+    assemble_bulk();
+    double
+    energy_norm(const dealii::TrilinosWrappers::MPI::Vector &v) const;
+    /// The Nitsche parameter r = gamma0 E / h_n of a contact face.
+    double
+    nitsche_r(const dealii::DoFHandler<3>::active_cell_iterator &cell,
+              unsigned int                                      face) const;
+
+    const CommonParameters &prm;
+    MPI_Comm                comm;
+
+    // "Elasticity" subsection
+    unsigned int degree;
+    bool         load_as_traction;
+    bool         top_clamped;
+    std::string  tangential_traction;
+    std::string  linear_solver;
+    double       krylov_tolerance;
+    std::vector<dealii::Point<3>> refinement_box;
+    unsigned int local_refinement_steps;
+
+    dealii::parallel::distributed::Triangulation<3> triangulation;
+    dealii::FESystem<3>                             fe;
+    dealii::DoFHandler<3>                           dof_handler;
+    dealii::MappingQ<3>                             mapping;
+    dealii::IndexSet                                locally_owned, locally_relevant;
+    dealii::AffineConstraints<double>               constraints;
+
+    dealii::TrilinosWrappers::SparseMatrix bulk_matrix;   // elastic stiffness
+    dealii::TrilinosWrappers::SparseMatrix system_matrix; // bulk + contact
+    dealii::TrilinosWrappers::MPI::Vector  load;          // condensed load
+    dealii::TrilinosWrappers::MPI::Vector  residual;      // -R(U)
+    dealii::TrilinosWrappers::MPI::Vector  solution;      // U (owned)
+    dealii::TrilinosWrappers::MPI::Vector  base;          // U at last solve
+    dealii::TrilinosWrappers::MPI::Vector  increment;     // dU
+    dealii::TrilinosWrappers::MPI::Vector  ghosted;       // U with ghosts
+
+    ObstacleSurface                                obstacle;
+    std::unique_ptr<dealii::FunctionParser<2>>     load_function;
+    std::unique_ptr<dealii::FunctionParser<2>>     traction_function;
+    std::unique_ptr<dealii::FunctionParser<3>>     exact_solution;
+
+    std::vector<unsigned char> previous_status;
+  };
+} // namespace NitscheContact
+
+#endif

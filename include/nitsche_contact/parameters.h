@@ -1,0 +1,167 @@
+// Run-time parameters shared by all models. Every model reads the same
+// geometry, material, load, obstacle, contact, nonlinear-solver and output
+// sections, so that one .prm describes one physical problem whatever model
+// solves it. Model-specific sections ("Elasticity", "Kirchhoff", "Mindlin")
+// are declared by the models themselves (see model_factory.h).
+#ifndef nitsche_contact_parameters_h
+#define nitsche_contact_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/point.h>
+
+#include <nitsche_contact/nitsche_kernel.h>
+
+#include <array>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace NitscheContact
+{
+  /// Error in the user's input: the message names the entry, the value and
+  /// what is allowed. main() prints it and exits with status 1.
+  class InputError : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
+
+  /// A nonlinear solve that did not converge (exit status 2).
+  class ConvergenceFailure : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
+
+  /// Boundary condition on one lateral edge of the plate (one lateral face of
+  /// the 3D block).
+  enum class EdgeCondition
+  {
+    clamped,          ///< all displacements (and rotations) zero
+    simply_supported, ///< deflection zero (hard support for plates)
+    symmetry,         ///< normal displacement and normal rotation zero
+    free              ///< natural
+  };
+
+  struct CommonParameters
+  {
+    // "Model" (top level)
+    std::string model;
+
+    // "Geometry": the plate [0,Lx] x [0,Ly] x (-t/2, t/2)
+    double                       length_x  = 10.;
+    double                       length_y  = 10.;
+    double                       thickness = 0.01;
+    std::array<EdgeCondition, 4> edges;   // x=0, x=Lx, y=0, y=Ly
+    std::vector<unsigned int>    subdivisions; // cells per direction (x,y[,z])
+    unsigned int                 initial_refinement = 0;
+    unsigned int                 n_cycles           = 1;
+
+    // "Material"
+    double youngs_modulus = 2e5;
+    double poisson_ratio  = 0.3;
+
+    // "Load"
+    std::string load_expression; // q(x,y): force per unit area, >0 upwards
+    std::string load_constants;
+
+    // "Obstacle"
+    std::string obstacle_type;   // plane | sphere | function
+    double      obstacle_level = -1.;
+    dealii::Point<3> sphere_center;
+    double           sphere_radius = 1.;
+    std::string      obstacle_expression; // height z(x,y) of the obstacle
+    bool obstacle_level_is_midplane = false; // plate convention
+
+    // "Contact"
+    double theta    = 1.;
+    double gamma0   = 20.;
+    double friction = 0.;
+
+    // "Nonlinear solver"
+    NonlinearScheme scheme                 = NonlinearScheme::newton;
+    double          tolerance              = 1e-10;
+    unsigned int    max_iterations         = 50;
+    bool            line_search            = true;
+    bool            allow_non_convergence  = false;
+    bool            print_iterations       = true;
+
+    // "Output"
+    std::string                     output_directory = "output";
+    std::string                     output_format    = "vtu";
+    bool                            print_timings    = false;
+    std::vector<dealii::Point<2>>   probes;
+    dealii::Point<2>                profile_start, profile_end;
+    unsigned int                    profile_points = 101;
+
+    // "Reference solution"
+    std::string exact_solution;  // components separated by ';' (empty: none)
+    std::string exact_constants;
+
+    static void
+    declare(dealii::ParameterHandler &prm);
+    void
+    parse(dealii::ParameterHandler &prm);
+
+    /// Convenience: the Lame constants of the material.
+    double
+    lambda() const
+    {
+      return youngs_modulus * poisson_ratio /
+             ((1. + poisson_ratio) * (1. - 2. * poisson_ratio));
+    }
+    double
+    mu() const
+    {
+      return youngs_modulus / (2. * (1. + poisson_ratio));
+    }
+    /// Bending stiffness D = E t^3 / (12 (1 - nu^2)).
+    double
+    bending_stiffness() const
+    {
+      return youngs_modulus * thickness * thickness * thickness /
+             (12. * (1. - poisson_ratio * poisson_ratio));
+    }
+
+  };
+
+  /// The rigid obstacle as a height field z = z_obs(x, y) below the plate.
+  /// Where a sphere does not reach, the height is -1e30 (no obstacle).
+  class ObstacleSurface
+  {
+  public:
+    explicit ObstacleSurface(const CommonParameters &prm);
+    /// Obstacle height below the in-plane point p.
+    double
+    height(const dealii::Point<2> &p) const;
+
+  private:
+    std::string                                    type;
+    double                                         level;
+    dealii::Point<3>                               center;
+    double                                         radius;
+    std::unique_ptr<dealii::FunctionParser<2>>     function;
+  };
+
+  /// Build a FunctionParser from "expr1; expr2; ..." with variables x,y[,z]
+  /// and constants "a=1, b=2"; throws InputError naming `entry`.
+  template <int dim>
+  std::unique_ptr<dealii::FunctionParser<dim>>
+  make_parsed_function(const std::string &expression,
+                       const std::string &constants,
+                       const unsigned int n_components,
+                       const std::string &entry);
+
+  /// Parse a list "x1,y1; x2,y2; ..." of 2D points; throws InputError naming
+  /// `entry` on malformed input.
+  std::vector<dealii::Point<2>>
+  parse_point_list(const std::string &text, const std::string &entry);
+
+  /// Name of an edge condition, for logs.
+  std::string
+  to_string(EdgeCondition c);
+} // namespace NitscheContact
+
+#endif

@@ -1,0 +1,464 @@
+#include <deal.II/base/convergence_table.h>
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/base/utilities.h>
+
+#include <nitsche_contact/driver.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace NitscheContact
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// A JSON number: finite values with 10 significant digits, else null.
+    std::string
+    json_number(const double x)
+    {
+      if (!std::isfinite(x))
+        return "null";
+      std::ostringstream s;
+      s << std::setprecision(10) << x;
+      return s.str();
+    }
+
+    std::string
+    json_string(const std::string &x)
+    {
+      std::string out = "\"";
+      for (const char c : x)
+        {
+          if (c == '"' || c == '\\')
+            out += '\\';
+          out += c;
+        }
+      return out + "\"";
+    }
+
+    std::string
+    scheme_name(const NonlinearScheme s)
+    {
+      return s == NonlinearScheme::newton ? "newton" : "fixed point";
+    }
+  } // namespace
+
+  ContactDriver::ContactDriver(const CommonParameters &prm, MPI_Comm comm)
+    : prm(prm)
+    , comm(comm)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
+  {
+    // Check once, before any work, that the output directory is usable.
+    int ok = 1;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        try
+          {
+            std::filesystem::create_directories(prm.output_directory);
+            const std::string probe = prm.output_directory + "/.write-test";
+            std::ofstream     f(probe);
+            f << "ok" << std::endl;
+            ok = f.good() ? 1 : 0;
+            f.close();
+            std::filesystem::remove(probe);
+          }
+        catch (const std::exception &)
+          {
+            ok = 0;
+          }
+      }
+    ok = Utilities::MPI::broadcast(comm, ok, 0);
+    if (!ok)
+      throw InputError("invalid value '" + prm.output_directory +
+                       "' for parameter 'Output/Directory': the directory "
+                       "cannot be created or is not writable");
+  }
+
+  unsigned int
+  ContactDriver::solve_nonlinear(ContactModel &model,
+                                 const unsigned int cycle,
+                                 PhaseTimes        &t,
+                                 bool              &converged)
+  {
+    (void)cycle;
+    Timer                      timer;
+    std::vector<std::uint64_t> history;
+    bool                       damping        = false;
+    double                     last_increment = std::numeric_limits<double>::max();
+    unsigned int               solves         = 0;
+    converged                                 = false;
+
+    for (unsigned int k = 0;; ++k)
+      {
+        timer.restart();
+        const ContactCounts c = model.assemble(prm.scheme, true);
+        t.assembly += timer.wall_time();
+
+        const bool status_unchanged = (k > 0 && c.n_changed == 0);
+        if (status_unchanged && last_increment <= prm.tolerance)
+          {
+            converged = true;
+            if (prm.print_iterations)
+              pcout << "    converged: contact status unchanged and "
+                       "|dU|_a <= "
+                    << prm.tolerance << " |U|_a" << std::endl;
+            records.back().counts = c;
+            break;
+          }
+        if (solves >= prm.max_iterations)
+          {
+            records.back().counts = c;
+            break;
+          }
+
+        // A contact status seen two or more iterations ago coming back
+        // means the full-step iteration cycles: switch to damped steps.
+        if (!damping && prm.line_search && c.n_changed > 0)
+          for (std::size_t i = 0; i + 1 < history.size(); ++i)
+            if (history[i] == c.hash)
+              {
+                damping = true;
+                pcout << "    contact status cycles: switching to damped "
+                         "steps (backtracking on |R|)"
+                      << std::endl;
+                break;
+              }
+        history.push_back(c.hash);
+
+        timer.restart();
+        model.solve_linear();
+        t.solve += timer.wall_time();
+        ++solves;
+
+        double step = 1.;
+        model.apply_increment(step);
+        if (damping)
+          {
+            const double r0 = c.residual_norm;
+            for (; step > 1. / 1024.; step *= 0.5)
+              {
+                model.apply_increment(step);
+                timer.restart();
+                const ContactCounts trial = model.assemble(prm.scheme, false);
+                t.assembly += timer.wall_time();
+                if (trial.residual_norm <= (1. - 1e-4 * step) * r0)
+                  break;
+              }
+          }
+
+        const double du = step * model.increment_energy_norm();
+        const double u  = model.solution_energy_norm();
+        last_increment  = (u > 0.) ? du / u : (du == 0. ? 0. : 1.);
+
+        if (prm.print_iterations)
+          {
+            std::ostringstream line;
+            line << "    iteration " << std::setw(3) << solves
+                 << ": contact " << c.n_active << "/" << c.n_points;
+            if (prm.friction > 0.)
+              line << " (stick " << c.n_stick << ", slip " << c.n_slip
+                   << ")";
+            line << ", changed " << c.n_changed << std::scientific
+                 << std::setprecision(3) << ", |dU|_a/|U|_a "
+                 << last_increment << ", |R| " << c.residual_norm;
+            if (step < 1.)
+              line << std::fixed << std::setprecision(4) << ", step "
+                   << step;
+            pcout << line.str() << std::endl;
+          }
+      }
+    return solves;
+  }
+
+  void
+  ContactDriver::run(ContactModel &model)
+  {
+    pcout << "nitsche-contact: model '" << model.name() << "'" << std::endl;
+    for (const auto &kv : model.description())
+      pcout << "  " << kv.first << " = " << kv.second << std::endl;
+    pcout << "  nonlinear scheme = " << scheme_name(prm.scheme) << std::endl;
+
+    for (unsigned int cycle = 0; cycle < prm.n_cycles; ++cycle)
+      {
+        CycleRecord rec;
+        rec.cycle = cycle;
+        Timer timer;
+        model.setup_cycle(cycle);
+        rec.times.setup = timer.wall_time();
+        rec.n_dofs      = model.n_dofs();
+        rec.h           = model.mesh_size();
+        records.push_back(rec);
+
+        pcout << "Cycle " << cycle << ": " << rec.n_dofs << " DoFs, h = "
+              << rec.h << std::endl;
+
+        bool converged = false;
+        PhaseTimes &times = records.back().times;
+        records.back().iterations =
+          solve_nonlinear(model, cycle, times, converged);
+        records.back().converged = converged;
+        if (!converged)
+          {
+            pcout << "  NOT CONVERGED: the " << scheme_name(prm.scheme)
+                  << " iteration did not converge in "
+                  << prm.max_iterations << " iterations on cycle " << cycle
+                  << std::endl;
+            if (!prm.allow_non_convergence)
+              {
+                write_summary(model);
+                throw ConvergenceFailure(
+                  "the nonlinear solver did not converge in " +
+                  std::to_string(prm.max_iterations) +
+                  " iterations on cycle " + std::to_string(cycle) +
+                  " (raise 'Nonlinear solver/Maximum iterations', or set "
+                  "'Allow non-convergence = true' to keep going)");
+              }
+          }
+
+        timer.restart();
+        records.back().results = model.postprocess(prm.probes);
+        times.postprocess      = timer.wall_time();
+
+        timer.restart();
+        if (prm.output_format != "none")
+          {
+            for (const auto &series :
+                 model.write_graphical_output(prm.output_directory, cycle))
+              pvd_entries[series.first].emplace_back(
+                static_cast<double>(cycle), series.second);
+            if (Utilities::MPI::this_mpi_process(comm) == 0)
+              for (const auto &series : pvd_entries)
+                {
+                  std::ofstream pvd(prm.output_directory + "/" +
+                                    series.first + ".pvd");
+                  DataOutBase::write_pvd_record(pvd, series.second);
+                }
+          }
+        write_profile(model, cycle);
+        times.output = timer.wall_time();
+
+        const CycleResults &r = records.back().results;
+        pcout << "  contact area " << r.contact_area << ", contact force "
+              << r.contact_force << ", deflection in [" << r.min_deflection
+              << ", " << r.max_deflection << "]" << std::endl;
+        for (unsigned int p = 0; p < r.probes.size(); ++p)
+          pcout << "  deflection at (" << prm.probes[p] << ") = "
+                << r.probes[p] << std::endl;
+        for (const auto &e : r.errors)
+          pcout << "  error " << e.first << " = " << e.second << std::endl;
+      }
+
+    write_tables();
+    write_summary(model);
+
+    if (prm.print_timings)
+      {
+        pcout << "\nWall-clock seconds per phase\n"
+              << "cycle      dofs   setup  assembly    solve  postproc  "
+                 "output\n";
+        for (const auto &r : records)
+          pcout << std::setw(5) << r.cycle << std::setw(10) << r.n_dofs
+                << std::fixed << std::setprecision(3) << std::setw(8)
+                << r.times.setup << std::setw(10) << r.times.assembly
+                << std::setw(9) << r.times.solve << std::setw(10)
+                << r.times.postprocess << std::setw(8) << r.times.output
+                << std::endl;
+      }
+  }
+
+  void
+  ContactDriver::write_profile(const ContactModel &model,
+                               const unsigned int  cycle) const
+  {
+    std::vector<Point<2>> points(prm.profile_points);
+    for (unsigned int i = 0; i < prm.profile_points; ++i)
+      {
+        const double s = double(i) / (prm.profile_points - 1);
+        points[i]      = prm.profile_start + s * (prm.profile_end -
+                                             prm.profile_start);
+      }
+    const std::vector<double> w = model.deflection_at(points);
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      return;
+    const double  length = prm.profile_start.distance(prm.profile_end);
+    std::ofstream f(prm.output_directory + "/profile-" +
+                    Utilities::int_to_string(cycle, 2) + ".csv");
+    f << "s,x,y,deflection\n" << std::setprecision(10);
+    for (unsigned int i = 0; i < points.size(); ++i)
+      f << length * i / (points.size() - 1) << ',' << points[i][0] << ','
+        << points[i][1] << ',' << w[i] << '\n';
+    if (cycle + 1 == prm.n_cycles)
+      std::filesystem::copy_file(
+        prm.output_directory + "/profile-" + Utilities::int_to_string(cycle, 2) +
+          ".csv",
+        prm.output_directory + "/profile.csv",
+        std::filesystem::copy_options::overwrite_existing);
+  }
+
+  void
+  ContactDriver::write_tables() const
+  {
+    ConvergenceTable table;
+    std::vector<std::string> error_names;
+    for (const auto &r : records)
+      {
+        table.add_value("cycle", r.cycle);
+        table.add_value("dofs", static_cast<unsigned long>(r.n_dofs));
+        table.add_value("h", r.h);
+        table.add_value("its", r.iterations);
+        table.add_value("area", r.results.contact_area);
+        table.add_value("force", r.results.contact_force);
+        table.add_value("min_w", r.results.min_deflection);
+        table.add_value("max_w", r.results.max_deflection);
+        for (unsigned int p = 0; p < r.results.probes.size(); ++p)
+          table.add_value("w@p" + std::to_string(p), r.results.probes[p]);
+        for (const auto &e : r.results.errors)
+          {
+            table.add_value(e.first, e.second);
+            if (std::find(error_names.begin(), error_names.end(), e.first) ==
+                error_names.end())
+              error_names.push_back(e.first);
+          }
+      }
+    for (const std::string col : {"h", "area", "force", "min_w", "max_w"})
+      {
+        table.set_precision(col, 4);
+        table.set_scientific(col, true);
+      }
+    if (!records.empty())
+      for (unsigned int p = 0; p < records.back().results.probes.size(); ++p)
+        {
+          table.set_precision("w@p" + std::to_string(p), 6);
+          table.set_scientific("w@p" + std::to_string(p), true);
+        }
+    for (const auto &e : error_names)
+      {
+        table.set_precision(e, 3);
+        table.set_scientific(e, true);
+        table.evaluate_convergence_rates(e,
+                                         ConvergenceTable::reduction_rate_log2);
+      }
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      return;
+    std::cout << std::endl;
+    table.write_text(std::cout);
+    std::ofstream txt(prm.output_directory + "/convergence.txt");
+    table.write_text(txt);
+    std::ofstream tex(prm.output_directory + "/convergence.tex");
+    table.write_tex(tex);
+
+    // The same data as CSV (full precision), with the rates of the errors.
+    std::ofstream csv(prm.output_directory + "/convergence.csv");
+    csv << "cycle,dofs,h,iterations,contact_area,contact_force,"
+           "min_deflection,max_deflection";
+    if (!records.empty())
+      for (unsigned int p = 0; p < records.back().results.probes.size(); ++p)
+        csv << ",probe" << p;
+    for (const auto &e : error_names)
+      csv << ",error_" << e << ",rate_" << e;
+    csv << '\n' << std::setprecision(10);
+    for (unsigned int i = 0; i < records.size(); ++i)
+      {
+        const auto &r = records[i];
+        csv << r.cycle << ',' << r.n_dofs << ',' << r.h << ','
+            << r.iterations << ',' << r.results.contact_area << ','
+            << r.results.contact_force << ',' << r.results.min_deflection
+            << ',' << r.results.max_deflection;
+        for (const double p : r.results.probes)
+          csv << ',' << p;
+        for (const auto &name : error_names)
+          {
+            double e = std::numeric_limits<double>::quiet_NaN(), prev = e;
+            for (const auto &x : r.results.errors)
+              if (x.first == name)
+                e = x.second;
+            if (i > 0)
+              for (const auto &x : records[i - 1].results.errors)
+                if (x.first == name)
+                  prev = x.second;
+            csv << ',' << e << ',';
+            if (i > 0 && prev > 0 && e > 0)
+              csv << std::log2(prev / e);
+          }
+        csv << '\n';
+      }
+  }
+
+  void
+  ContactDriver::write_summary(const ContactModel &model) const
+  {
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      return;
+    std::ofstream f(prm.output_directory + "/summary.json");
+    f << "{\n  \"model\": " << json_string(model.name()) << ",\n";
+    f << "  \"parameters\": {\n";
+    const auto desc = model.description();
+    for (const auto &kv : desc)
+      f << "    " << json_string(kv.first) << ": " << json_string(kv.second)
+        << ",\n";
+    f << "    \"nonlinear scheme\": " << json_string(scheme_name(prm.scheme))
+      << ",\n    \"mpi processes\": "
+      << Utilities::MPI::n_mpi_processes(comm) << "\n  },\n";
+    f << "  \"probe_points\": [";
+    for (unsigned int p = 0; p < prm.probes.size(); ++p)
+      f << (p ? ", " : "") << "[" << json_number(prm.probes[p][0]) << ", "
+        << json_number(prm.probes[p][1]) << "]";
+    f << "],\n  \"cycles\": [\n";
+    for (unsigned int i = 0; i < records.size(); ++i)
+      {
+        const auto &r = records[i];
+        f << "    {\n      \"cycle\": " << r.cycle
+          << ",\n      \"n_dofs\": " << r.n_dofs
+          << ",\n      \"h\": " << json_number(r.h)
+          << ",\n      \"nonlinear_iterations\": " << r.iterations
+          << ",\n      \"converged\": " << (r.converged ? "true" : "false")
+          << ",\n      \"contact_points\": " << r.counts.n_points
+          << ",\n      \"active_points\": " << r.counts.n_active
+          << ",\n      \"stick_points\": " << r.counts.n_stick
+          << ",\n      \"slip_points\": " << r.counts.n_slip
+          << ",\n      \"contact_area\": "
+          << json_number(r.results.contact_area)
+          << ",\n      \"contact_force\": "
+          << json_number(r.results.contact_force)
+          << ",\n      \"min_deflection\": "
+          << json_number(r.results.min_deflection)
+          << ",\n      \"max_deflection\": "
+          << json_number(r.results.max_deflection) << ",\n      \"probes\": [";
+        for (unsigned int p = 0; p < r.results.probes.size(); ++p)
+          f << (p ? ", " : "") << json_number(r.results.probes[p]);
+        f << "],\n      \"errors\": {";
+        for (unsigned int e = 0; e < r.results.errors.size(); ++e)
+          f << (e ? ", " : "") << json_string(r.results.errors[e].first)
+            << ": " << json_number(r.results.errors[e].second);
+        f << "},\n      \"rates\": {";
+        bool first = true;
+        if (i > 0)
+          for (const auto &e : r.results.errors)
+            for (const auto &ep : records[i - 1].results.errors)
+              if (ep.first == e.first && e.second > 0 && ep.second > 0)
+                {
+                  f << (first ? "" : ", ") << json_string(e.first) << ": "
+                    << json_number(std::log2(ep.second / e.second));
+                  first = false;
+                }
+        f << "},\n      \"extra\": {";
+        for (unsigned int e = 0; e < r.results.extra.size(); ++e)
+          f << (e ? ", " : "") << json_string(r.results.extra[e].first)
+            << ": " << json_number(r.results.extra[e].second);
+        f << "},\n      \"wall_times\": {\"setup\": "
+          << json_number(r.times.setup)
+          << ", \"assembly\": " << json_number(r.times.assembly)
+          << ", \"solve\": " << json_number(r.times.solve)
+          << ", \"postprocess\": " << json_number(r.times.postprocess)
+          << ", \"output\": " << json_number(r.times.output) << "}\n    }"
+          << (i + 1 < records.size() ? "," : "") << "\n";
+      }
+    f << "  ]\n}\n";
+  }
+} // namespace NitscheContact

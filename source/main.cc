@@ -1,0 +1,149 @@
+// nitsche-contact: frictional contact of elastic plates (3D elasticity,
+// Reissner-Mindlin, Kirchhoff-Love) against rigid obstacles with Nitsche's
+// method. See README.md and doc/.
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+
+#include <nitsche_contact/driver.h>
+#include <nitsche_contact/model_factory.h>
+#include <nitsche_contact/parameters.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+namespace
+{
+  void
+  print_usage(std::ostream &out)
+  {
+    out
+      << "Usage: nitsche-contact [--help] [--print-parameters] FILE.prm\n"
+         "\n"
+         "Solves the contact problem described by the deal.II parameter file\n"
+         "FILE.prm with the model selected by 'set Model = elasticity |\n"
+         "mindlin | kirchhoff' and writes summary.json, convergence tables,\n"
+         "a deflection profile and VTU/PVD files to 'Output/Directory'.\n"
+         "\n"
+         "  --help               print this message and exit\n"
+         "  --print-parameters   print every parameter with its documentation\n"
+         "                       and default value (a complete .prm) and exit\n"
+         "\n"
+         "Run in parallel with 'mpirun -np N nitsche-contact FILE.prm'.\n"
+         "Exit status: 0 success, 1 invalid input, 2 nonlinear solver did not\n"
+         "converge, 3 internal error.\n";
+  }
+} // namespace
+
+int
+main(int argc, char *argv[])
+{
+  using namespace NitscheContact;
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const bool root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+
+  dealii::ParameterHandler prm;
+  CommonParameters::declare(prm);
+  declare_model_parameters(prm);
+
+  std::string file;
+  for (int i = 1; i < argc; ++i)
+    {
+      const std::string a = argv[i];
+      if (a == "--help" || a == "-h")
+        {
+          if (root)
+            print_usage(std::cout);
+          return 0;
+        }
+      if (a == "--print-parameters")
+        {
+          if (root)
+            prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
+          return 0;
+        }
+      if (!a.empty() && a[0] == '-')
+        {
+          if (root)
+            {
+              std::cerr << "nitsche-contact: error: unknown option '" << a
+                        << "'\n\n";
+              print_usage(std::cerr);
+            }
+          return 1;
+        }
+      if (!file.empty())
+        {
+          if (root)
+            std::cerr << "nitsche-contact: error: more than one parameter "
+                         "file given ('"
+                      << file << "' and '" << a << "')\n";
+          return 1;
+        }
+      file = a;
+    }
+  if (file.empty())
+    {
+      if (root)
+        {
+          std::cerr << "nitsche-contact: error: no parameter file given\n\n";
+          print_usage(std::cerr);
+        }
+      return 1;
+    }
+
+  try
+    {
+      if (!std::filesystem::is_regular_file(file))
+        throw InputError("the parameter file '" + file +
+                         "' does not exist or is not a regular file");
+      try
+        {
+          prm.parse_input(file, "", false, true);
+        }
+      catch (const dealii::ExceptionBase &e)
+        {
+          // deal.II's message names the file, line, entry and pattern;
+          // keep it, without the stack trace.
+          std::ostringstream msg;
+          e.print_info(msg);
+          std::string text = msg.str();
+          while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+            text.pop_back();
+          throw InputError("cannot read '" + file + "':" +
+                           (text.find('\n') != std::string::npos ? "\n" : " ") +
+                           text);
+        }
+
+      CommonParameters common;
+      common.parse(prm);
+      auto          model = create_model(common, prm, MPI_COMM_WORLD);
+      ContactDriver driver(common, MPI_COMM_WORLD);
+      driver.run(*model);
+      {
+        std::ofstream used(common.output_directory + "/used_parameters.prm");
+        if (root)
+          prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
+      }
+    }
+  catch (const InputError &e)
+    {
+      if (root)
+        std::cerr << "nitsche-contact: error: " << e.what() << std::endl;
+      return 1;
+    }
+  catch (const ConvergenceFailure &e)
+    {
+      if (root)
+        std::cerr << "nitsche-contact: error: " << e.what() << std::endl;
+      return 2;
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << "nitsche-contact: internal error: " << e.what()
+                << std::endl;
+      return 3;
+    }
+  return 0;
+}

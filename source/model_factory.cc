@@ -1,0 +1,34 @@
+#include <nitsche_contact/model_factory.h>
+#include <nitsche_contact/models/elasticity.h>
+
+namespace NitscheContact
+{
+  void
+  declare_model_parameters(dealii::ParameterHandler &prm)
+  {
+    ElasticityModel::declare_parameters(prm);
+  }
+
+  std::vector<std::string>
+  available_models()
+  {
+    return {"elasticity"};
+  }
+
+  std::unique_ptr<ContactModel>
+  create_model(const CommonParameters   &common,
+               dealii::ParameterHandler &prm,
+               MPI_Comm                  comm)
+  {
+    if (common.model == "elasticity")
+      return std::make_unique<ElasticityModel>(common, prm, comm);
+    if (common.model == "mindlin" || common.model == "kirchhoff")
+      throw InputError("invalid value '" + common.model +
+                       "' for parameter 'Model': this model is not "
+                       "available yet in this version; available models: "
+                       "elasticity");
+    throw InputError("invalid value '" + common.model +
+                     "' for parameter 'Model': allowed are 'elasticity', "
+                     "'mindlin', 'kirchhoff'");
+  }
+} // namespace NitscheContact

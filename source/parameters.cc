@@ -1,0 +1,514 @@
+#include <deal.II/base/utilities.h>
+
+#include <nitsche_contact/parameters.h>
+
+#include <cmath>
+#include <map>
+#include <sstream>
+
+namespace NitscheContact
+{
+  using namespace dealii;
+
+  namespace
+  {
+    [[noreturn]] void
+    bad_value(const std::string &entry,
+              const std::string &value,
+              const std::string &allowed)
+    {
+      throw InputError("invalid value '" + value + "' for parameter '" +
+                       entry + "': " + allowed);
+    }
+
+    std::string
+    str(const double x)
+    {
+      std::ostringstream s;
+      s << x;
+      return s.str();
+    }
+
+    EdgeCondition
+    parse_edge(const std::string &s, const std::string &entry)
+    {
+      const std::string t = Utilities::trim(s);
+      if (t == "clamped")
+        return EdgeCondition::clamped;
+      if (t == "simply supported")
+        return EdgeCondition::simply_supported;
+      if (t == "symmetry")
+        return EdgeCondition::symmetry;
+      if (t == "free")
+        return EdgeCondition::free;
+      bad_value(entry,
+                t,
+                "allowed are 'clamped', 'simply supported', 'symmetry', "
+                "'free'");
+    }
+
+    std::vector<double>
+    parse_doubles(const std::string &text,
+                  const std::string &entry,
+                  const char         separator)
+    {
+      std::vector<double> out;
+      for (const auto &piece :
+           Utilities::split_string_list(text, separator))
+        {
+          try
+            {
+              std::size_t  pos = 0;
+              const double v   = std::stod(piece, &pos);
+              if (pos != piece.size())
+                throw std::invalid_argument(piece);
+              out.push_back(v);
+            }
+          catch (const std::exception &)
+            {
+              bad_value(entry, text, "expected numbers separated by '" +
+                                       std::string(1, separator) + "'");
+            }
+        }
+      return out;
+    }
+  } // namespace
+
+  std::string
+  to_string(const EdgeCondition c)
+  {
+    switch (c)
+      {
+        case EdgeCondition::clamped:
+          return "clamped";
+        case EdgeCondition::simply_supported:
+          return "simply supported";
+        case EdgeCondition::symmetry:
+          return "symmetry";
+        default:
+          return "free";
+      }
+  }
+
+  std::vector<Point<2>>
+  parse_point_list(const std::string &text, const std::string &entry)
+  {
+    std::vector<Point<2>> points;
+    for (const auto &item : Utilities::split_string_list(text, ';'))
+      {
+        if (item.empty())
+          continue;
+        const auto c = parse_doubles(item, entry, ',');
+        if (c.size() != 2)
+          bad_value(entry, text, "expected points 'x, y' separated by ';'");
+        points.emplace_back(c[0], c[1]);
+      }
+    return points;
+  }
+
+  template <int dim>
+  std::unique_ptr<FunctionParser<dim>>
+  make_parsed_function(const std::string &expression,
+                       const std::string &constants,
+                       const unsigned int n_components,
+                       const std::string &entry)
+  {
+    std::map<std::string, double> consts;
+    consts["pi"] = numbers::PI;
+    for (const auto &c : Utilities::split_string_list(constants, ','))
+      {
+        const auto kv = Utilities::split_string_list(c, '=');
+        if (kv.size() != 2)
+          bad_value(entry + " constants",
+                    constants,
+                    "expected 'name=value' pairs separated by ','");
+        const auto v = parse_doubles(kv[1], entry + " constants", ',');
+        consts[kv[0]] = v[0];
+      }
+    const auto exprs = Utilities::split_string_list(expression, ';');
+    if (exprs.size() != n_components)
+      bad_value(entry,
+                expression,
+                "expected " + std::to_string(n_components) +
+                  " expression(s) separated by ';'");
+    const std::string vars = dim == 2 ? "x,y" : "x,y,z";
+    auto              f    = std::make_unique<FunctionParser<dim>>(n_components);
+    try
+      {
+        f->initialize(vars, exprs, consts);
+        // Evaluate once to catch unknown symbols now rather than mid-run.
+        Vector<double> v(n_components);
+        f->vector_value(Point<dim>(), v);
+      }
+    catch (const std::exception &e)
+      {
+        bad_value(entry,
+                  expression,
+                  "the expression could not be parsed (variables are " +
+                    vars + ", plus the declared constants)");
+      }
+    return f;
+  }
+
+  template std::unique_ptr<FunctionParser<2>>
+  make_parsed_function<2>(const std::string &,
+                          const std::string &,
+                          const unsigned int,
+                          const std::string &);
+  template std::unique_ptr<FunctionParser<3>>
+  make_parsed_function<3>(const std::string &,
+                          const std::string &,
+                          const unsigned int,
+                          const std::string &);
+
+  void
+  CommonParameters::declare(ParameterHandler &prm)
+  {
+    prm.declare_entry("Model",
+                      "elasticity",
+                      Patterns::Anything(),
+                      "Which model solves the problem: 'elasticity' (3D "
+                      "linear elasticity, Nitsche contact and Coulomb "
+                      "friction on the bottom face), 'mindlin' "
+                      "(Reissner-Mindlin plate) or 'kirchhoff' "
+                      "(Kirchhoff-Love plate).");
+
+    prm.enter_subsection("Geometry");
+    {
+      prm.declare_entry("Length x", "10", Patterns::Double(),
+                        "Plate side along x; the mid-plane is [0,Lx]x[0,Ly].");
+      prm.declare_entry("Length y", "10", Patterns::Double(),
+                        "Plate side along y.");
+      prm.declare_entry("Thickness", "0.01", Patterns::Double(),
+                        "Plate thickness t = 2 epsilon; the 3D body is "
+                        "[0,Lx]x[0,Ly]x(-t/2,t/2).");
+      prm.declare_entry(
+        "Edge conditions",
+        "clamped, clamped, clamped, clamped",
+        Patterns::Anything(),
+        "Conditions on the four lateral edges x=0, x=Lx, y=0, y=Ly, each "
+        "one of 'clamped' (all displacements and rotations zero), 'simply "
+        "supported' (deflection zero; hard support for plates; u3=0 on "
+        "the face in 3D), 'symmetry' (normal displacement and normal "
+        "rotation zero), 'free'.");
+      prm.declare_entry("Subdivisions", "8, 8, 1", Patterns::Anything(),
+                        "Cells of the coarse mesh along x, y (and through "
+                        "the thickness for the 3D model).");
+      prm.declare_entry("Initial refinement", "0",
+                        Patterns::Integer(0, 12),
+                        "Global refinements of the coarse mesh before the "
+                        "first cycle.");
+      prm.declare_entry("Number of cycles", "1", Patterns::Integer(1, 12),
+                        "Refinement cycles; each refines globally once and "
+                        "starts the nonlinear solver from the previous "
+                        "cycle's solution (nested iteration).");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Material");
+    {
+      prm.declare_entry("Young's modulus", "2e5", Patterns::Double(),
+                        "E > 0.");
+      prm.declare_entry("Poisson ratio", "0.3", Patterns::Double(),
+                        "nu in (-1, 0.5).");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Load");
+    {
+      prm.declare_entry(
+        "Transverse load",
+        "-0.02",
+        Patterns::Anything(),
+        "Transverse load q(x,y) per unit mid-plane area, positive upwards "
+        "(the paper: -0.02). The 3D model applies it as the body force "
+        "q/t or as a top-face traction, see 'Elasticity/Load applied "
+        "as'.");
+      prm.declare_entry("Function constants", "", Patterns::Anything(),
+                        "Constants for the load expression, e.g. 'q0=1'.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Obstacle");
+    {
+      prm.declare_entry("Type", "plane", Patterns::Anything(),
+                        "'plane' (z = Level), 'sphere' (upper cap of the "
+                        "sphere with the given center and radius) or "
+                        "'function' (z = Height(x,y)).");
+      prm.declare_entry("Level", "-1", Patterns::Double(),
+                        "Height of the plane obstacle.");
+      prm.declare_entry("Sphere center", "0, 0, -1", Patterns::Anything(),
+                        "Center of the spherical obstacle 'x, y, z'.");
+      prm.declare_entry("Sphere radius", "1", Patterns::Double(),
+                        "Radius of the spherical obstacle, > 0.");
+      prm.declare_entry("Height", "-1", Patterns::Anything(),
+                        "Obstacle height z(x,y) for Type = function.");
+      prm.declare_entry(
+        "Plate obstacle convention",
+        "bottom face",
+        Patterns::Selection("bottom face|mid-plane"),
+        "For the plate models: 'bottom face' constrains the lower face "
+        "(w >= z_obs + t/2, physically consistent with the 3D model), "
+        "'mid-plane' constrains the mid-plane deflection (w >= z_obs).");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Contact");
+    {
+      prm.declare_entry("Nitsche theta", "1", Patterns::Anything(),
+                        "Nitsche variant: 1 (symmetric), 0 "
+                        "(non-symmetric), -1 (skew-symmetric).");
+      prm.declare_entry(
+        "Nitsche gamma0", "20", Patterns::Double(),
+        "Dimensionless Nitsche parameter gamma0 > 0; r = gamma0 E / h_n. "
+        "theta = 1 needs gamma0 above the trace constant (about 2 for Q1, 7 "
+        "for Q2 cubes), theta = -1 works for any gamma0 > 0.");
+      prm.declare_entry("Friction coefficient", "0", Patterns::Double(),
+                        "Coulomb coefficient F >= 0 (0: frictionless).");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Nonlinear solver");
+    {
+      prm.declare_entry(
+        "Scheme", "newton", Patterns::Selection("newton|fixed point"),
+        "'newton': generalized (semismooth) Newton with the full "
+        "generalized Jacobian; 'fixed point': the paper's fixed point "
+        "(contact status, slip direction and friction threshold frozen "
+        "at the previous iterate). Identical for frictionless problems.");
+      prm.declare_entry("Tolerance", "1e-10", Patterns::Double(),
+                        "Stop when the contact status is unchanged and the "
+                        "energy norm of the increment is below Tolerance "
+                        "times the energy norm of the solution; > 0.");
+      prm.declare_entry("Maximum iterations", "50",
+                        Patterns::Integer(1, 100000),
+                        "Iteration limit per cycle.");
+      prm.declare_entry(
+        "Line search", "true", Patterns::Bool(),
+        "Fall back to backtracking on the residual norm when the contact "
+        "status cycles (a status seen before reappears).");
+      prm.declare_entry("Allow non-convergence", "false", Patterns::Bool(),
+                        "If false (default) a run whose nonlinear solver "
+                        "does not converge stops with exit status 2.");
+      prm.declare_entry("Print iterations", "true", Patterns::Bool(),
+                        "One log line per nonlinear iteration.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    {
+      prm.declare_entry("Directory", "output", Patterns::Anything(),
+                        "Where summary.json, the tables, the profile CSV "
+                        "and the VTU/PVD files go (created if missing).");
+      prm.declare_entry("Format", "vtu", Patterns::Selection("vtu|none"),
+                        "Graphical output: 'vtu' (with a .pvd record per "
+                        "run) or 'none'.");
+      prm.declare_entry("Print timings", "false", Patterns::Bool(),
+                        "Print the wall-clock time of every phase at the "
+                        "end of the run.");
+      prm.declare_entry("Probe points", "5, 5", Patterns::Anything(),
+                        "In-plane points 'x, y; x, y; ...' where the "
+                        "deflection (u3 on the mid-plane / w) is reported.");
+      prm.declare_entry("Profile line", "0, 5; 10, 5", Patterns::Anything(),
+                        "Start and end 'x0, y0; x1, y1' of the line along "
+                        "which the deflection is written to profile.csv.");
+      prm.declare_entry("Profile points", "101", Patterns::Integer(2, 100000),
+                        "Number of points along the profile line.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Reference solution");
+    {
+      prm.declare_entry(
+        "Exact solution", "", Patterns::Anything(),
+        "Optional exact solution, components separated by ';' (3D: "
+        "u1; u2; u3 in x,y,z; Kirchhoff: w in x,y; Mindlin: as documented "
+        "in its section). When set, errors and rates are reported.");
+      prm.declare_entry("Function constants", "", Patterns::Anything(),
+                        "Constants for the exact solution, e.g. 'p=1'.");
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  CommonParameters::parse(ParameterHandler &prm)
+  {
+    model = Utilities::trim(prm.get("Model"));
+
+    prm.enter_subsection("Geometry");
+    {
+      length_x  = prm.get_double("Length x");
+      length_y  = prm.get_double("Length y");
+      thickness = prm.get_double("Thickness");
+      if (!(length_x > 0.))
+        bad_value("Geometry/Length x", str(length_x), "must be > 0");
+      if (!(length_y > 0.))
+        bad_value("Geometry/Length y", str(length_y), "must be > 0");
+      if (!(thickness > 0.))
+        bad_value("Geometry/Thickness", str(thickness), "must be > 0");
+      const auto e =
+        Utilities::split_string_list(prm.get("Edge conditions"), ',');
+      if (e.size() != 4)
+        bad_value("Geometry/Edge conditions", prm.get("Edge conditions"),
+                  "expected four conditions (x=0, x=Lx, y=0, y=Ly)");
+      for (unsigned int i = 0; i < 4; ++i)
+        edges[i] = parse_edge(e[i], "Geometry/Edge conditions");
+      subdivisions.clear();
+      for (const double d : parse_doubles(prm.get("Subdivisions"),
+                                          "Geometry/Subdivisions", ','))
+        {
+          if (d < 1 || d != std::floor(d) || d > 100000)
+            bad_value("Geometry/Subdivisions", prm.get("Subdivisions"),
+                      "expected positive integers");
+          subdivisions.push_back(static_cast<unsigned int>(d));
+        }
+      if (subdivisions.size() < 2 || subdivisions.size() > 3)
+        bad_value("Geometry/Subdivisions", prm.get("Subdivisions"),
+                  "expected 'nx, ny' or 'nx, ny, nz'");
+      if (subdivisions.size() == 2)
+        subdivisions.push_back(1);
+      initial_refinement = prm.get_integer("Initial refinement");
+      n_cycles           = prm.get_integer("Number of cycles");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Material");
+    {
+      youngs_modulus = prm.get_double("Young's modulus");
+      poisson_ratio  = prm.get_double("Poisson ratio");
+      if (!(youngs_modulus > 0.))
+        bad_value("Material/Young's modulus", str(youngs_modulus),
+                  "must be > 0");
+      if (!(poisson_ratio > -1. && poisson_ratio < 0.5))
+        bad_value("Material/Poisson ratio", str(poisson_ratio),
+                  "must lie in the open interval (-1, 0.5)");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Load");
+    {
+      load_expression = prm.get("Transverse load");
+      load_constants  = prm.get("Function constants");
+      make_parsed_function<2>(load_expression, load_constants, 1,
+                              "Load/Transverse load");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Obstacle");
+    {
+      obstacle_type = Utilities::trim(prm.get("Type"));
+      if (obstacle_type != "plane" && obstacle_type != "sphere" &&
+          obstacle_type != "function")
+        bad_value("Obstacle/Type", obstacle_type,
+                  "allowed are 'plane', 'sphere', 'function'");
+      obstacle_level = prm.get_double("Level");
+      const auto c   = parse_doubles(prm.get("Sphere center"),
+                                   "Obstacle/Sphere center", ',');
+      if (c.size() != 3)
+        bad_value("Obstacle/Sphere center", prm.get("Sphere center"),
+                  "expected 'x, y, z'");
+      sphere_center = Point<3>(c[0], c[1], c[2]);
+      sphere_radius = prm.get_double("Sphere radius");
+      if (!(sphere_radius > 0.))
+        bad_value("Obstacle/Sphere radius", str(sphere_radius),
+                  "must be > 0");
+      obstacle_expression = prm.get("Height");
+      if (obstacle_type == "function")
+        make_parsed_function<2>(obstacle_expression, "", 1,
+                                "Obstacle/Height");
+      obstacle_level_is_midplane =
+        prm.get("Plate obstacle convention") == "mid-plane";
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Contact");
+    {
+      const std::string t = Utilities::trim(prm.get("Nitsche theta"));
+      if (t == "1" || t == "+1")
+        theta = 1.;
+      else if (t == "0")
+        theta = 0.;
+      else if (t == "-1")
+        theta = -1.;
+      else
+        bad_value("Contact/Nitsche theta", t, "allowed are 1, 0, -1");
+      gamma0 = prm.get_double("Nitsche gamma0");
+      if (!(gamma0 > 0.))
+        bad_value("Contact/Nitsche gamma0", str(gamma0), "must be > 0");
+      friction = prm.get_double("Friction coefficient");
+      if (!(friction >= 0.))
+        bad_value("Contact/Friction coefficient", str(friction),
+                  "must be >= 0");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Nonlinear solver");
+    {
+      scheme    = prm.get("Scheme") == "newton" ? NonlinearScheme::newton :
+                                                  NonlinearScheme::fixed_point;
+      tolerance = prm.get_double("Tolerance");
+      if (!(tolerance > 0.))
+        bad_value("Nonlinear solver/Tolerance", str(tolerance),
+                  "must be > 0");
+      max_iterations        = prm.get_integer("Maximum iterations");
+      line_search           = prm.get_bool("Line search");
+      allow_non_convergence = prm.get_bool("Allow non-convergence");
+      print_iterations      = prm.get_bool("Print iterations");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    {
+      output_directory = Utilities::trim(prm.get("Directory"));
+      if (output_directory.empty())
+        bad_value("Output/Directory", "", "must not be empty");
+      output_format = prm.get("Format");
+      print_timings = prm.get_bool("Print timings");
+      probes = parse_point_list(prm.get("Probe points"),
+                                "Output/Probe points");
+      const auto line = parse_point_list(prm.get("Profile line"),
+                                         "Output/Profile line");
+      if (line.size() != 2)
+        bad_value("Output/Profile line", prm.get("Profile line"),
+                  "expected two points 'x0, y0; x1, y1'");
+      profile_start  = line[0];
+      profile_end    = line[1];
+      profile_points = prm.get_integer("Profile points");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Reference solution");
+    {
+      exact_solution  = Utilities::trim(prm.get("Exact solution"));
+      exact_constants = prm.get("Function constants");
+    }
+    prm.leave_subsection();
+  }
+
+  ObstacleSurface::ObstacleSurface(const CommonParameters &prm)
+    : type(prm.obstacle_type)
+    , level(prm.obstacle_level)
+    , center(prm.sphere_center)
+    , radius(prm.sphere_radius)
+  {
+    if (type == "function")
+      function = make_parsed_function<2>(prm.obstacle_expression, "", 1,
+                                         "Obstacle/Height");
+  }
+
+  double
+  ObstacleSurface::height(const Point<2> &p) const
+  {
+    if (type == "plane")
+      return level;
+    if (type == "sphere")
+      {
+        const double dx = p[0] - center[0], dy = p[1] - center[1];
+        const double r2 = dx * dx + dy * dy;
+        if (r2 >= radius * radius)
+          return -1e30;
+        return center[2] + std::sqrt(radius * radius - r2);
+      }
+    return function->value(p);
+  }
+} // namespace NitscheContact
