@@ -297,7 +297,7 @@ namespace NitscheContact
 
     prm.enter_subsection("Output");
     {
-      prm.declare_entry("Directory", "output", Patterns::Anything(),
+      prm.declare_entry("Directory", "results", Patterns::Anything(),
                         "Where summary.json, the tables, the profile CSV "
                         "and the VTU/PVD files go (created if missing).");
       prm.declare_entry("Format", "vtu", Patterns::Selection("vtu|none"),

@@ -1,0 +1,68 @@
+"""Helpers for the verification tests: run nitsche-contact on a parameter
+text and return the parsed summary.json. Each test script asserts numbers
+against an independent source and exits non-zero on failure."""
+import argparse
+import json
+import os
+import subprocess
+import sys
+
+
+def parse_args():
+    p = argparse.ArgumentParser()
+    p.add_argument("--exe", required=True)
+    p.add_argument("--mpiexec", default="mpiexec")
+    p.add_argument("--workdir", required=True)
+    return p.parse_args()
+
+
+def run(args, name, prm_text, np=1, expect_status=0):
+    """Write <workdir>/<name>.prm (with Output/Directory set to <name>),
+    run the program, and return (summary dict or None, stdout+stderr)."""
+    os.makedirs(args.workdir, exist_ok=True)
+    outdir = os.path.join(args.workdir, name)
+    prm_file = os.path.join(args.workdir, name + ".prm")
+    with open(prm_file, "w") as f:
+        f.write(prm_text)
+        f.write("\nsubsection Output\n  set Directory = %s\n  set Format = none\nend\n" % outdir)
+    cmd = [args.exe, prm_file]
+    if np > 1:
+        cmd = [args.mpiexec, "-np", str(np)] + cmd
+    proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                          text=True, cwd=args.workdir)
+    if proc.returncode != expect_status:
+        print(proc.stdout)
+        fail("%s: exit status %d, expected %d" % (name, proc.returncode, expect_status))
+    summary = None
+    path = os.path.join(outdir, "summary.json")
+    if os.path.exists(path):
+        with open(path) as f:
+            summary = json.load(f)
+    return summary, proc.stdout
+
+
+failures = []
+
+
+def check(condition, message):
+    print(("ok    " if condition else "FAIL  ") + message)
+    if not condition:
+        failures.append(message)
+
+
+def fail(message):
+    print("FAIL  " + message)
+    sys.exit(1)
+
+
+def close(value, reference, rel_tol, what):
+    err = abs(value - reference) / max(abs(reference), 1e-300)
+    check(err <= rel_tol, "%s: %.10g vs %.10g (rel. error %.2e <= %.1e)"
+          % (what, value, reference, err, rel_tol))
+
+
+def finish():
+    if failures:
+        print("%d check(s) failed" % len(failures))
+        sys.exit(1)
+    print("all checks passed")
