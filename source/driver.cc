@@ -6,6 +6,7 @@
 #include <nitsche_contact/driver.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -89,7 +90,7 @@ namespace NitscheContact
     (void)cycle;
     Timer                      timer;
     std::vector<std::uint64_t> history;
-    bool                       damping        = false;
+    bool                       damping        = prm.line_search && prm.damping_after == 0;
     double                     last_increment = std::numeric_limits<double>::max();
     unsigned int               solves         = 0;
     converged                                 = false;
@@ -120,15 +121,25 @@ namespace NitscheContact
         // A contact status seen two or more iterations ago coming back
         // means the full-step iteration cycles: switch to damped steps.
         if (!damping && prm.line_search && c.n_changed > 0)
-          for (std::size_t i = 0; i + 1 < history.size(); ++i)
-            if (history[i] == c.hash)
+          {
+            for (std::size_t i = 0; i + 1 < history.size(); ++i)
+              if (history[i] == c.hash)
+                {
+                  damping = true;
+                  pcout << "    contact status cycles: switching to damped "
+                           "steps (backtracking on |R|)"
+                        << std::endl;
+                  break;
+                }
+            if (!damping && solves >= prm.damping_after)
               {
                 damping = true;
-                pcout << "    contact status cycles: switching to damped "
-                         "steps (backtracking on |R|)"
+                pcout << "    no convergence after " << solves
+                      << " full steps: switching to damped steps "
+                         "(backtracking on |R|)"
                       << std::endl;
-                break;
               }
+          }
         history.push_back(c.hash);
 
         timer.restart();
@@ -138,17 +149,49 @@ namespace NitscheContact
 
         double step = 1.;
         model.apply_increment(step);
-        if (damping)
+        if (prm.line_search && std::isfinite(c.energy))
           {
-            const double r0 = c.residual_norm;
-            for (; step > 1. / 1024.; step *= 0.5)
+            // An energy exists (theta = 1, frictionless): Newton directions
+            // are descent directions; backtrack until J decreases.
+            for (; step >= 1. / 1024.; step *= 0.5)
               {
                 model.apply_increment(step);
                 timer.restart();
                 const ContactCounts trial = model.assemble(prm.scheme, false);
                 t.assembly += timer.wall_time();
+                if (trial.energy <= c.energy)
+                  break;
+              }
+            if (step < 1. / 1024.)
+              {
+                step = 1. / 1024.;
+                model.apply_increment(step);
+              }
+          }
+        else if (damping)
+          {
+            // Backtracking (Armijo) on |R|; if no step length down to 1/64
+            // decreases |R| sufficiently, take the best one tried.
+            const double r0        = c.residual_norm;
+            double       best_step = 1., best_norm = 0.;
+            for (; step >= 1. / 64.; step *= 0.5)
+              {
+                model.apply_increment(step);
+                timer.restart();
+                const ContactCounts trial = model.assemble(prm.scheme, false);
+                t.assembly += timer.wall_time();
+                if (step == 1. || trial.residual_norm < best_norm)
+                  {
+                    best_step = step;
+                    best_norm = trial.residual_norm;
+                  }
                 if (trial.residual_norm <= (1. - 1e-4 * step) * r0)
                   break;
+              }
+            if (step < 1. / 64.)
+              {
+                step = best_step;
+                model.apply_increment(step);
               }
           }
 
@@ -198,18 +241,29 @@ namespace NitscheContact
         pcout << "Cycle " << cycle << ": " << rec.n_dofs << " DoFs, h = "
               << rec.h << std::endl;
 
-        bool converged = false;
-        PhaseTimes &times = records.back().times;
-        records.back().iterations =
-          solve_nonlinear(model, cycle, times, converged);
+        bool        converged = false;
+        PhaseTimes &times     = records.back().times;
+        const unsigned int n_steps = (cycle == 0) ? prm.load_steps : 1;
+        records.back().iterations  = 0;
+        for (unsigned int s = 1; s <= n_steps; ++s)
+          {
+            model.set_load_factor(double(s) / n_steps);
+            if (n_steps > 1)
+              pcout << "  load step " << s << "/" << n_steps << std::endl;
+            records.back().iterations +=
+              solve_nonlinear(model, cycle, times, converged);
+            if (!converged)
+              break;
+          }
         records.back().converged = converged;
         if (!converged)
           {
-            pcout << "  NOT CONVERGED: the " << scheme_name(prm.scheme)
-                  << " iteration did not converge in "
-                  << prm.max_iterations << " iterations on cycle " << cycle
-                  << std::endl;
-            if (!prm.allow_non_convergence)
+            if (prm.allow_non_convergence)
+              pcout << "  NOT CONVERGED: the " << scheme_name(prm.scheme)
+                    << " iteration did not converge in "
+                    << prm.max_iterations << " iterations on cycle " << cycle
+                    << "; continuing as requested" << std::endl;
+            else
               {
                 write_summary(model);
                 throw ConvergenceFailure(
@@ -293,6 +347,7 @@ namespace NitscheContact
     for (unsigned int i = 0; i < points.size(); ++i)
       f << length * i / (points.size() - 1) << ',' << points[i][0] << ','
         << points[i][1] << ',' << w[i] << '\n';
+    f.close();
     if (cycle + 1 == prm.n_cycles)
       std::filesystem::copy_file(
         prm.output_directory + "/profile-" + Utilities::int_to_string(cycle, 2) +

@@ -10,6 +10,7 @@
 #include <nitsche_contact/parameters.h>
 
 #include <filesystem>
+#include <sstream>
 #include <fstream>
 #include <iostream>
 
@@ -121,11 +122,11 @@ main(int argc, char *argv[])
       auto          model = create_model(common, prm, MPI_COMM_WORLD);
       ContactDriver driver(common, MPI_COMM_WORLD);
       driver.run(*model);
-      {
-        std::ofstream used(common.output_directory + "/used_parameters.prm");
-        if (root)
+      if (root)
+        {
+          std::ofstream used(common.output_directory + "/used_parameters.prm");
           prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
-      }
+        }
     }
   catch (const InputError &e)
     {

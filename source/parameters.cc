@@ -290,6 +290,16 @@ namespace NitscheContact
       prm.declare_entry("Allow non-convergence", "false", Patterns::Bool(),
                         "If false (default) a run whose nonlinear solver "
                         "does not converge stops with exit status 2.");
+      prm.declare_entry(
+        "Load steps", "1", Patterns::Integer(1, 10000),
+        "On the first cycle, apply the load in this many equal increments, "
+        "each solved to convergence starting from the previous one "
+        "(continuation). Thin plates pressed far onto an obstacle need a "
+        "few; later cycles start from the previous cycle's solution at "
+        "full load (nested iteration).");
+      prm.declare_entry("Damping after", "8", Patterns::Integer(0, 100000),
+                        "With 'Line search', damped steps are also used "
+                        "from this iteration on (0: always damped).");
       prm.declare_entry("Print iterations", "true", Patterns::Bool(),
                         "One log line per nonlinear iteration.");
     }
@@ -454,6 +464,8 @@ namespace NitscheContact
       line_search           = prm.get_bool("Line search");
       allow_non_convergence = prm.get_bool("Allow non-convergence");
       print_iterations      = prm.get_bool("Print iterations");
+      load_steps            = prm.get_integer("Load steps");
+      damping_after         = prm.get_integer("Damping after");
     }
     prm.leave_subsection();
 

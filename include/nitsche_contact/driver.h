@@ -58,11 +58,11 @@ namespace NitscheContact
 
     struct CycleRecord
     {
-      unsigned int   cycle;
-      std::uint64_t  n_dofs;
-      double         h;
-      unsigned int   iterations;
-      bool           converged;
+      unsigned int   cycle      = 0;
+      std::uint64_t  n_dofs     = 0;
+      double         h          = 0.;
+      unsigned int   iterations = 0;
+      bool           converged  = false;
       ContactCounts  counts;
       CycleResults   results;
       PhaseTimes     times;

@@ -37,6 +37,9 @@ namespace NitscheContact
                                  ///< previous evaluation with a matrix
     std::uint64_t hash      = 0; ///< fingerprint of the whole status field
     double        residual_norm = 0.; ///< l2 norm of the residual vector
+    /// Value of the energy whose gradient is the residual, if the
+    /// formulation has one (theta = 1, frictionless); NaN otherwise.
+    double        energy = 0.;
   };
 
   /// Quantities the driver reports for a converged cycle.
@@ -72,6 +75,12 @@ namespace NitscheContact
     /// the previous solution onto the new mesh (nested iteration).
     virtual void
     setup_cycle(unsigned int cycle) = 0;
+
+    /// Scale the applied load (body force, tractions, transverse load) by
+    /// `factor` for the following assemble() calls; used for load stepping
+    /// on the first cycle. Obstacles and boundary data are not scaled.
+    virtual void
+    set_load_factor(double factor) = 0;
 
     virtual std::uint64_t
     n_dofs() const = 0;

@@ -25,6 +25,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace NitscheContact
@@ -155,6 +156,18 @@ namespace NitscheContact
           }
       }
     return st;
+  }
+
+  /// For theta = 1 and F = 0 the Nitsche residual is the gradient of the
+  /// convex energy J(u) = 1/2 a(u,u) - L(u) + sum over contact points of
+  /// this density (1/(2r)) ([s_n]_-^2 - sigma_n^2); the driver uses J as the
+  /// merit function of its line search. Returns NaN for other variants.
+  inline double
+  contact_energy_density(const PointInput &in, const PointState &st)
+  {
+    if (in.theta != 1. || in.friction > 0.)
+      return std::numeric_limits<double>::quiet_NaN();
+    return (st.lambda_n * st.lambda_n - in.sigma_n * in.sigma_n) / (2. * in.r);
   }
 
   /// Linearised kinematic and stress quantities of one local shape

@@ -87,6 +87,8 @@ namespace NitscheContact
     bool            line_search            = true;
     bool            allow_non_convergence  = false;
     bool            print_iterations       = true;
+    unsigned int    load_steps             = 1;
+    unsigned int    damping_after          = 8;
 
     // "Output"
     std::string                     output_directory = "output";

@@ -40,6 +40,11 @@ namespace NitscheContact
     description() const override;
     void
     setup_cycle(unsigned int cycle) override;
+    void
+    set_load_factor(double factor) override
+    {
+      load_factor = factor;
+    }
     std::uint64_t
     n_dofs() const override;
     double
@@ -114,6 +119,7 @@ namespace NitscheContact
     std::unique_ptr<dealii::FunctionParser<3>>     exact_solution;
 
     std::vector<unsigned char> previous_status;
+    double                     load_factor = 1.;
   };
 } // namespace NitscheContact
 

@@ -1,0 +1,1038 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/distributed/solution_transfer.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_out_faces.h>
+#include <deal.II/numerics/data_postprocessor.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <nitsche_contact/models/elasticity.h>
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace NitscheContact
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// The stress sigma = lambda tr(eps) I + 2 mu eps of a displacement
+    /// gradient.
+    Tensor<2, 3>
+    stress(const Tensor<2, 3> &grad_u, const double lambda, const double mu)
+    {
+      Tensor<2, 3> s;
+      const double div = trace(grad_u);
+      for (unsigned int a = 0; a < 3; ++a)
+        for (unsigned int b = 0; b < 3; ++b)
+          s[a][b] = mu * (grad_u[a][b] + grad_u[b][a]) +
+                    (a == b ? lambda * div : 0.);
+      return s;
+    }
+
+    std::uint64_t
+    status_hash(const std::vector<unsigned char> &status)
+    {
+      std::uint64_t h = 1469598103934665603ull;
+      for (const unsigned char s : status)
+        h = (h ^ s) * 1099511628211ull;
+      return h;
+    }
+
+    /// Graphical output of the contact face: Nitsche contact stress,
+    /// status, gap and normal displacement, from the displacement field.
+    class ContactPostprocessor : public DataPostprocessor<3>
+    {
+    public:
+      ContactPostprocessor(const CommonParameters &prm,
+                           const ObstacleSurface  &obstacle)
+        : prm(prm)
+        , obstacle(obstacle)
+      {}
+
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<3> &in,
+        std::vector<Vector<double>>              &out) const override
+      {
+        const auto cell = in.template get_cell<3>();
+        // bottom face (face 4 of a hexahedron) of this cell: h_n = |K|/|F|
+        const double h_n = cell->measure() / cell->face(4)->measure();
+        const double r   = prm.gamma0 * prm.youngs_modulus / h_n;
+        Tensor<1, 3> n;
+        n[2] = -1.;
+        for (unsigned int q = 0; q < in.evaluation_points.size(); ++q)
+          {
+            Tensor<2, 3> grad;
+            Tensor<1, 3> u;
+            for (unsigned int a = 0; a < 3; ++a)
+              {
+                grad[a] = in.solution_gradients[q][a];
+                u[a]    = in.solution_values[q][a];
+              }
+            const Tensor<2, 3> s = stress(grad, prm.lambda(), prm.mu());
+            PointInput         pi;
+            pi.normal  = n;
+            pi.u_n     = u * n;
+            pi.sigma_n = n * (s * n);
+            pi.sigma_t = s * n - pi.sigma_n * n;
+            pi.slip    = u - pi.u_n * n;
+            const Point<3> &x = in.evaluation_points[q];
+            pi.gap      = x[2] - obstacle.height(Point<2>(x[0], x[1]));
+            pi.r        = r;
+            pi.theta    = prm.theta;
+            pi.friction = prm.friction;
+            const PointState st =
+              evaluate_contact_point(pi, NonlinearScheme::newton);
+            out[q](0) = -st.lambda_n;
+            out[q](1) = st.lambda_t.norm();
+            out[q](2) = static_cast<double>(st.status);
+            out[q](3) = std::min(pi.gap, 1e30);
+            out[q](4) = pi.u_n - pi.gap;
+          }
+      }
+
+      std::vector<std::string>
+      get_names() const override
+      {
+        return {"contact_pressure", "tangential_stress", "contact_status",
+                "initial_gap", "penetration"};
+      }
+
+      UpdateFlags
+      get_needed_update_flags() const override
+      {
+        return update_values | update_gradients | update_quadrature_points;
+      }
+
+    private:
+      const CommonParameters &prm;
+      const ObstacleSurface  &obstacle;
+    };
+
+    /// Von Mises stress and the stress components in the volume output.
+    class StressPostprocessor : public DataPostprocessor<3>
+    {
+    public:
+      StressPostprocessor(const double lambda, const double mu)
+        : lambda(lambda)
+        , mu(mu)
+      {}
+
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<3> &in,
+        std::vector<Vector<double>>              &out) const override
+      {
+        for (unsigned int q = 0; q < in.solution_gradients.size(); ++q)
+          {
+            Tensor<2, 3> grad;
+            for (unsigned int a = 0; a < 3; ++a)
+              grad[a] = in.solution_gradients[q][a];
+            const Tensor<2, 3> s   = stress(grad, lambda, mu);
+            const double       tr  = trace(s) / 3.;
+            double             dev = 0.;
+            for (unsigned int a = 0; a < 3; ++a)
+              for (unsigned int b = 0; b < 3; ++b)
+                dev += std::pow(s[a][b] - (a == b ? tr : 0.), 2);
+            out[q](0) = std::sqrt(1.5 * dev);
+            out[q](1) = s[0][0];
+            out[q](2) = s[1][1];
+            out[q](3) = s[2][2];
+            out[q](4) = s[0][1];
+            out[q](5) = s[0][2];
+            out[q](6) = s[1][2];
+          }
+      }
+
+      std::vector<std::string>
+      get_names() const override
+      {
+        return {"von_mises", "sigma_11", "sigma_22", "sigma_33",
+                "sigma_12", "sigma_13", "sigma_23"};
+      }
+
+      UpdateFlags
+      get_needed_update_flags() const override
+      {
+        return update_gradients;
+      }
+
+    private:
+      const double lambda, mu;
+    };
+
+    /// DataOutFaces restricted to the contact boundary.
+    class ContactFaces : public DataOutFaces<3>
+    {
+    public:
+      ContactFaces()
+        : DataOutFaces<3>(true)
+      {}
+
+      FaceDescriptor
+      first_face() override
+      {
+        FaceDescriptor f = DataOutFaces<3>::first_face();
+        while (f.first != this->triangulation->end() && !is_contact(f))
+          f = DataOutFaces<3>::next_face(f);
+        return f;
+      }
+
+      FaceDescriptor
+      next_face(const FaceDescriptor &face) override
+      {
+        FaceDescriptor f = DataOutFaces<3>::next_face(face);
+        while (f.first != this->triangulation->end() && !is_contact(f))
+          f = DataOutFaces<3>::next_face(f);
+        return f;
+      }
+
+    private:
+      static bool
+      is_contact(const FaceDescriptor &f)
+      {
+        return f.first->face(f.second)->at_boundary() &&
+               f.first->face(f.second)->boundary_id() ==
+                 ElasticityModel::contact_id;
+      }
+    };
+    unsigned int
+    read_degree(ParameterHandler &ph)
+    {
+      ph.enter_subsection("Elasticity");
+      const unsigned int k = ph.get_integer("Polynomial degree");
+      ph.leave_subsection();
+      return k;
+    }
+  } // namespace
+
+  void
+  ElasticityModel::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Elasticity");
+    {
+      prm.declare_entry(
+        "Polynomial degree", "2", Patterns::Integer(1, 2),
+        "1: trilinear Q1, 2: triquadratic Q2 hexahedra. For thin plates use "
+        "Q2: Q1 locks in bending (its parasitic shear strain grows like "
+        "(h/t)^2), Q2 represents the linear-in-x3 bending strain exactly.");
+      prm.declare_entry(
+        "Load applied as", "body force",
+        Patterns::Selection("body force|top traction"),
+        "How the transverse load q of 'Load/Transverse load' enters: the "
+        "body force (0,0,q/t) (the paper's f^V) or the traction (0,0,q) "
+        "on the top face.");
+      prm.declare_entry("Top tangential traction", "0; 0",
+                        Patterns::Anything(),
+                        "Tangential traction 'tx; ty' on the top face, "
+                        "functions of x,y (e.g. for friction tests).");
+      prm.declare_entry("Top face", "free", Patterns::Selection("free|clamped"),
+                        "'clamped' fixes the top face (u = 0), e.g. to "
+                        "press an obstacle into a block (Hertz test).");
+      prm.declare_entry(
+        "Linear solver", "direct", Patterns::Selection("direct|amg"),
+        "'direct': MUMPS through Trilinos/Amesos (robust, moderate sizes); "
+        "'amg': GMRES preconditioned by Trilinos ML AMG (large problems; "
+        "slow for very thin plates).");
+      prm.declare_entry("Krylov tolerance", "1e-10", Patterns::Double(0),
+                        "Relative residual tolerance of the AMG-GMRES "
+                        "solver.");
+      prm.declare_entry(
+        "Refinement box", "", Patterns::Anything(),
+        "Optional box 'x0, y0, z0; x1, y1, z1': cells whose centre lies in "
+        "it are refined 'Local refinement steps' extra times on the first "
+        "cycle (hanging nodes are handled by constraints).");
+      prm.declare_entry("Local refinement steps", "0",
+                        Patterns::Integer(0, 10),
+                        "Extra refinements inside 'Refinement box'.");
+    }
+    prm.leave_subsection();
+  }
+
+  ElasticityModel::ElasticityModel(const CommonParameters &common,
+                                   ParameterHandler       &ph,
+                                   MPI_Comm                comm)
+    : prm(common)
+    , comm(comm)
+    , triangulation(comm)
+    , fe(FE_Q<3>(read_degree(ph)), 3)
+    , mapping(1)
+    , obstacle(common)
+  {
+    ph.enter_subsection("Elasticity");
+    degree              = ph.get_integer("Polynomial degree");
+    load_as_traction    = ph.get("Load applied as") == "top traction";
+    tangential_traction = ph.get("Top tangential traction");
+    top_clamped         = ph.get("Top face") == "clamped";
+    linear_solver       = ph.get("Linear solver");
+    krylov_tolerance    = ph.get_double("Krylov tolerance");
+    const std::string box = Utilities::trim(ph.get("Refinement box"));
+    local_refinement_steps = ph.get_integer("Local refinement steps");
+    ph.leave_subsection();
+
+    if (!box.empty())
+      {
+        for (const auto &corner : Utilities::split_string_list(box, ';'))
+          {
+            const auto c = Utilities::split_string_list(corner, ',');
+            if (c.size() != 3)
+              throw InputError("invalid value '" + box +
+                               "' for parameter 'Elasticity/Refinement box': "
+                               "expected 'x0, y0, z0; x1, y1, z1'");
+            try
+              {
+                refinement_box.emplace_back(std::stod(c[0]),
+                                            std::stod(c[1]),
+                                            std::stod(c[2]));
+              }
+            catch (const std::exception &)
+              {
+                throw InputError("invalid value '" + box +
+                                 "' for parameter 'Elasticity/Refinement "
+                                 "box': expected numbers");
+              }
+          }
+        if (refinement_box.size() != 2)
+          throw InputError("invalid value '" + box +
+                           "' for parameter 'Elasticity/Refinement box': "
+                           "expected two corners");
+      }
+
+    load_function = make_parsed_function<2>(prm.load_expression,
+                                            prm.load_constants,
+                                            1,
+                                            "Load/Transverse load");
+    traction_function =
+      make_parsed_function<2>(tangential_traction, "", 2,
+                              "Elasticity/Top tangential traction");
+    if (!prm.exact_solution.empty())
+      exact_solution =
+        make_parsed_function<3>(prm.exact_solution, prm.exact_constants, 3,
+                                "Reference solution/Exact solution");
+  }
+
+  std::vector<std::pair<std::string, std::string>>
+  ElasticityModel::description() const
+  {
+    auto s = [](const double x) {
+      std::ostringstream o;
+      o << x;
+      return o.str();
+    };
+    return {{"element", "Q" + std::to_string(degree) + " hexahedra"},
+            {"E", s(prm.youngs_modulus)},
+            {"nu", s(prm.poisson_ratio)},
+            {"thickness", s(prm.thickness)},
+            {"plate", s(prm.length_x) + " x " + s(prm.length_y)},
+            {"edges", to_string(prm.edges[0]) + ", " + to_string(prm.edges[1]) +
+                        ", " + to_string(prm.edges[2]) + ", " +
+                        to_string(prm.edges[3])},
+            {"theta", s(prm.theta)},
+            {"gamma0", s(prm.gamma0)},
+            {"r", "gamma0 E / h_n, h_n = |K|/|F| (cell height normal to the "
+                  "contact face)"},
+            {"friction", s(prm.friction)},
+            {"load", prm.load_expression + (load_as_traction ?
+                                              " (top traction)" :
+                                              " (body force q/t)")},
+            {"obstacle", prm.obstacle_type},
+            {"linear solver", linear_solver}};
+  }
+
+  void
+  ElasticityModel::make_grid()
+  {
+    const double z0 = -0.5 * prm.thickness;
+    GridGenerator::subdivided_hyper_rectangle(
+      triangulation,
+      {prm.subdivisions[0], prm.subdivisions[1], prm.subdivisions[2]},
+      Point<3>(0., 0., z0),
+      Point<3>(prm.length_x, prm.length_y, -z0),
+      /*colorize: ids 0..5 = x-, x+, y-, y+, z-, z+*/ true);
+    triangulation.refine_global(prm.initial_refinement);
+    for (unsigned int step = 0; step < local_refinement_steps; ++step)
+      {
+        if (refinement_box.empty())
+          break;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              const Point<3> c      = cell->center();
+              bool           inside = true;
+              for (unsigned int d = 0; d < 3; ++d)
+                inside = inside &&
+                         c[d] >= std::min(refinement_box[0][d],
+                                          refinement_box[1][d]) &&
+                         c[d] <= std::max(refinement_box[0][d],
+                                          refinement_box[1][d]);
+              if (inside)
+                cell->set_refine_flag();
+            }
+        triangulation.execute_coarsening_and_refinement();
+      }
+  }
+
+  void
+  ElasticityModel::setup_dofs()
+  {
+    dof_handler.distribute_dofs(fe);
+    locally_owned    = dof_handler.locally_owned_dofs();
+    locally_relevant = DoFTools::extract_locally_relevant_dofs(dof_handler);
+
+    constraints.clear();
+    constraints.reinit(locally_relevant);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    const FEValuesExtractors::Scalar ux(0), uy(1), uz(2);
+    for (unsigned int e = 0; e < 4; ++e)
+      {
+        ComponentMask mask(3, false);
+        switch (prm.edges[e])
+          {
+            case EdgeCondition::clamped:
+              mask = ComponentMask(3, true);
+              break;
+            case EdgeCondition::simply_supported:
+              mask.set(2, true);
+              break;
+            case EdgeCondition::symmetry:
+              mask.set(e < 2 ? 0 : 1, true);
+              break;
+            case EdgeCondition::free:
+              break;
+          }
+        if (mask.n_selected_components() > 0)
+          VectorTools::interpolate_boundary_values(
+            mapping, dof_handler, e, Functions::ZeroFunction<3>(3),
+            constraints, mask);
+      }
+    if (top_clamped)
+      VectorTools::interpolate_boundary_values(mapping, dof_handler, 5,
+                                               Functions::ZeroFunction<3>(3),
+                                               constraints);
+    constraints.close();
+
+    DynamicSparsityPattern dsp(locally_relevant);
+    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+    SparsityTools::distribute_sparsity_pattern(dsp, locally_owned, comm,
+                                               locally_relevant);
+    bulk_matrix.reinit(locally_owned, locally_owned, dsp, comm);
+    system_matrix.reinit(locally_owned, locally_owned, dsp, comm);
+
+    load.reinit(locally_owned, comm);
+    residual.reinit(locally_owned, comm);
+    solution.reinit(locally_owned, comm);
+    base.reinit(locally_owned, comm);
+    increment.reinit(locally_owned, comm);
+    ghosted.reinit(locally_owned, locally_relevant, comm);
+    previous_status.clear();
+  }
+
+  void
+  ElasticityModel::assemble_bulk()
+  {
+    bulk_matrix = 0.;
+    load        = 0.;
+    const QGauss<3>     quadrature(degree + 1);
+    const QGauss<2>     face_quadrature(degree + 1);
+    FEValues<3>         fv(mapping, fe, quadrature,
+                   update_values | update_gradients |
+                     update_quadrature_points | update_JxW_values);
+    FEFaceValues<3>     fvf(mapping, fe, face_quadrature,
+                        update_values | update_quadrature_points |
+                          update_JxW_values);
+    const unsigned int  n = fe.n_dofs_per_cell();
+    FullMatrix<double>  cell_matrix(n, n);
+    Vector<double>      cell_rhs(n);
+    std::vector<types::global_dof_index> dofs(n);
+    const double        lambda = prm.lambda(), mu = prm.mu();
+    std::vector<unsigned int> comp(n);
+    for (unsigned int i = 0; i < n; ++i)
+      comp[i] = fe.system_to_component_index(i).first;
+    std::vector<Tensor<1, 3>> grads(n);
+    Vector<double>            traction(2);
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fv.reinit(cell);
+          cell_matrix = 0.;
+          cell_rhs    = 0.;
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              const double JxW = fv.JxW(q);
+              for (unsigned int i = 0; i < n; ++i)
+                grads[i] = fv.shape_grad(i, q);
+              // sigma(phi_j):eps(phi_i) for phi_i = N_i e_a, phi_j = N_j e_b:
+              // lambda d_a N_i d_b N_j + mu (d_b N_i d_a N_j + delta_ab
+              // grad N_i . grad N_j)
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  const unsigned int a = comp[i];
+                  for (unsigned int j = 0; j <= i; ++j)
+                    {
+                      const unsigned int b = comp[j];
+                      double v = lambda * grads[i][a] * grads[j][b] +
+                                 mu * grads[i][b] * grads[j][a];
+                      if (a == b)
+                        v += mu * (grads[i] * grads[j]);
+                      cell_matrix(i, j) += v * JxW;
+                    }
+                }
+              if (!load_as_traction)
+                {
+                  const Point<3> &x = fv.quadrature_point(q);
+                  const double    f3 =
+                    load_function->value(Point<2>(x[0], x[1])) / prm.thickness;
+                  for (unsigned int i = 0; i < n; ++i)
+                    if (comp[i] == 2)
+                      cell_rhs(i) += f3 * fv.shape_value(i, q) * JxW;
+                }
+            }
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = i + 1; j < n; ++j)
+              cell_matrix(i, j) = cell_matrix(j, i);
+
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == 5)
+              {
+                fvf.reinit(cell, f);
+                for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+                  {
+                    const Point<3> &x = fvf.quadrature_point(q);
+                    const Point<2>  p(x[0], x[1]);
+                    traction_function->vector_value(p, traction);
+                    const double t[3] = {traction(0), traction(1),
+                                         load_as_traction ?
+                                           load_function->value(p) :
+                                           0.};
+                    for (unsigned int i = 0; i < n; ++i)
+                      cell_rhs(i) +=
+                        t[comp[i]] * fvf.shape_value(i, q) * fvf.JxW(q);
+                  }
+              }
+          cell->get_dof_indices(dofs);
+          constraints.distribute_local_to_global(cell_matrix, cell_rhs, dofs,
+                                                 bulk_matrix, load);
+        }
+    bulk_matrix.compress(VectorOperation::add);
+    load.compress(VectorOperation::add);
+  }
+
+  void
+  ElasticityModel::setup_cycle(const unsigned int cycle)
+  {
+    if (cycle == 0)
+      {
+        make_grid();
+        dof_handler.reinit(triangulation);
+        setup_dofs();
+        solution = 0.;
+      }
+    else
+      {
+        // Nested iteration: refine globally, carry U over.
+        parallel::distributed::SolutionTransfer<3,
+                                                TrilinosWrappers::MPI::Vector>
+          transfer(dof_handler);
+        ghosted = solution;
+        triangulation.set_all_refine_flags();
+        triangulation.prepare_coarsening_and_refinement();
+        transfer.prepare_for_coarsening_and_refinement(ghosted);
+        triangulation.execute_coarsening_and_refinement();
+        setup_dofs();
+        transfer.interpolate(solution);
+        constraints.distribute(solution);
+      }
+    ghosted = solution;
+    assemble_bulk();
+  }
+
+  std::uint64_t
+  ElasticityModel::n_dofs() const
+  {
+    return dof_handler.n_dofs();
+  }
+
+  double
+  ElasticityModel::mesh_size() const
+  {
+    double h = 0.;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        h = std::max({h, cell->extent_in_direction(0),
+                      cell->extent_in_direction(1)});
+    return Utilities::MPI::max(h, comm);
+  }
+
+  double
+  ElasticityModel::nitsche_r(const DoFHandler<3>::active_cell_iterator &cell,
+                             const unsigned int face) const
+  {
+    const double h_n = cell->measure() / cell->face(face)->measure();
+    return prm.gamma0 * prm.youngs_modulus / h_n;
+  }
+
+  ContactCounts
+  ElasticityModel::assemble(const NonlinearScheme scheme,
+                            const bool            with_matrix)
+  {
+    ghosted = solution;
+    if (with_matrix)
+      system_matrix.copy_from(bulk_matrix);
+    // residual <- F - A U on unconstrained rows (the condensed A applied
+    // to a U that satisfies the constraints is the condensed product).
+    bulk_matrix.vmult(residual, solution);
+    residual.sadd(-1., load_factor, load);
+
+    const unsigned int q1d = degree + 3; // kinks inside faces
+    const QGauss<2>    face_quadrature(q1d);
+    FEFaceValues<3>    fvf(mapping, fe, face_quadrature,
+                        update_values | update_gradients |
+                          update_quadrature_points | update_JxW_values |
+                          update_normal_vectors);
+    const unsigned int n = fe.n_dofs_per_cell();
+    FullMatrix<double> cell_matrix(n, n);
+    Vector<double>     cell_residual(n);
+    std::vector<types::global_dof_index> dofs(n);
+    std::vector<ShapeContactData>        shapes(n);
+    std::vector<Vector<double>>          u_values(face_quadrature.size(),
+                                         Vector<double>(3));
+    std::vector<std::vector<Tensor<1, 3>>> u_grads(
+      face_quadrature.size(), std::vector<Tensor<1, 3>>(3));
+    const double lambda = prm.lambda(), mu = prm.mu();
+    std::vector<unsigned int> comp(n);
+    for (unsigned int i = 0; i < n; ++i)
+      comp[i] = fe.system_to_component_index(i).first;
+
+    std::vector<unsigned char> status;
+    ContactCounts              counts;
+    double                     contact_energy = 0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == contact_id)
+            {
+              fvf.reinit(cell, f);
+              fvf.get_function_values(ghosted, u_values);
+              fvf.get_function_gradients(ghosted, u_grads);
+              const double r = nitsche_r(cell, f);
+              cell_matrix    = 0.;
+              cell_residual  = 0.;
+              for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+                {
+                  const Tensor<1, 3> nrm = fvf.normal_vector(q);
+                  Tensor<1, 3>       u;
+                  Tensor<2, 3>       grad;
+                  for (unsigned int a = 0; a < 3; ++a)
+                    {
+                      u[a]    = u_values[q](a);
+                      grad[a] = u_grads[q][a];
+                    }
+                  const Tensor<2, 3> s  = stress(grad, lambda, mu);
+                  const Tensor<1, 3> sn = s * nrm;
+                  PointInput         in;
+                  in.normal  = nrm;
+                  in.u_n     = u * nrm;
+                  in.sigma_n = nrm * sn;
+                  in.sigma_t = sn - in.sigma_n * nrm;
+                  in.slip    = u - in.u_n * nrm;
+                  const Point<3> &x = fvf.quadrature_point(q);
+                  in.gap      = x[2] - obstacle.height(Point<2>(x[0], x[1]));
+                  in.r        = r;
+                  in.theta    = prm.theta;
+                  in.friction = prm.friction;
+                  const PointState st = evaluate_contact_point(in, scheme);
+                  status.push_back(static_cast<unsigned char>(st.status));
+                  contact_energy += contact_energy_density(in, st) * fvf.JxW(q);
+
+                  for (unsigned int i = 0; i < n; ++i)
+                    {
+                      const unsigned int  c = comp[i];
+                      const double        N = fvf.shape_value(i, q);
+                      const Tensor<1, 3>  g = fvf.shape_grad(i, q);
+                      ShapeContactData   &d = shapes[i];
+                      // sigma(phi_i) n with phi_i = N e_c
+                      Tensor<1, 3> sin = (lambda * g[c]) * nrm;
+                      sin[c] += mu * (g * nrm);
+                      sin += (mu * nrm[c]) * g;
+                      d.sigma_n = nrm * sin;
+                      d.sigma_t = sin - d.sigma_n * nrm;
+                      d.u_n     = N * nrm[c];
+                      Tensor<1, 3> phi;
+                      phi[c] = N;
+                      d.u_t  = phi - d.u_n * nrm;
+                    }
+                  add_point_contribution(in, st, shapes, fvf.JxW(q),
+                                         with_matrix ? &cell_matrix : nullptr,
+                                         cell_residual);
+                }
+              cell->get_dof_indices(dofs);
+              cell_residual *= -1.; // we assemble -R
+              if (with_matrix)
+                constraints.distribute_local_to_global(cell_matrix,
+                                                       cell_residual, dofs,
+                                                       system_matrix,
+                                                       residual);
+              else
+                constraints.distribute_local_to_global(cell_residual, dofs,
+                                                       residual);
+            }
+    if (with_matrix)
+      system_matrix.compress(VectorOperation::add);
+    residual.compress(VectorOperation::add);
+    // constrained rows carry no equation
+    for (const auto &line : constraints.get_lines())
+      if (locally_owned.is_element(line.index))
+        residual(line.index) = 0.;
+    residual.compress(VectorOperation::insert);
+
+    for (const unsigned char s : status)
+      {
+        ++counts.n_points;
+        if (s != 0)
+          ++counts.n_active;
+        if (s == 1)
+          ++counts.n_stick;
+        if (s == 2)
+          ++counts.n_slip;
+      }
+    if (with_matrix)
+      {
+        if (previous_status.size() == status.size())
+          for (unsigned int i = 0; i < status.size(); ++i)
+            counts.n_changed += (status[i] != previous_status[i]);
+        else
+          counts.n_changed = counts.n_active;
+        previous_status = status;
+      }
+    counts.hash = status_hash(status);
+    counts.n_points  = Utilities::MPI::sum(counts.n_points, comm);
+    counts.n_active  = Utilities::MPI::sum(counts.n_active, comm);
+    counts.n_stick   = Utilities::MPI::sum(counts.n_stick, comm);
+    counts.n_slip    = Utilities::MPI::sum(counts.n_slip, comm);
+    counts.n_changed = Utilities::MPI::sum(counts.n_changed, comm);
+    counts.hash      = Utilities::MPI::sum(counts.hash, comm);
+    counts.residual_norm = residual.l2_norm();
+    {
+      // J(U) = 1/2 U.A U - F.U + contact energy (U satisfies the
+      // constraints, the condensed A gives the true bulk energy after
+      // zeroing the constrained entries).
+      TrilinosWrappers::MPI::Vector w(solution), aw(locally_owned, comm);
+      for (const auto &line : constraints.get_lines())
+        if (locally_owned.is_element(line.index))
+          w(line.index) = 0.;
+      w.compress(VectorOperation::insert);
+      bulk_matrix.vmult(aw, w);
+      counts.energy = 0.5 * (w * aw) - load_factor * (load * w) +
+                      Utilities::MPI::sum(contact_energy, comm);
+    }
+    if (prm.friction == 0.)
+      counts.n_stick = 0;
+    return counts;
+  }
+
+  unsigned int
+  ElasticityModel::solve_linear()
+  {
+    base = solution;
+    increment = 0.;
+    unsigned int its = 0;
+    if (linear_solver == "direct")
+      {
+        SolverControl                  control(1, 0);
+        TrilinosWrappers::SolverDirect solver(
+          control,
+          TrilinosWrappers::SolverDirect::AdditionalData(false,
+                                                         "Amesos_Mumps"));
+        solver.solve(system_matrix, increment, residual);
+      }
+    else
+      {
+        TrilinosWrappers::PreconditionAMG                 amg;
+        TrilinosWrappers::PreconditionAMG::AdditionalData data;
+        std::vector<std::vector<bool>>                    modes;
+        DoFTools::extract_constant_modes(dof_handler,
+                                         ComponentMask(3, true),
+                                         modes);
+        data.constant_modes        = modes;
+        data.elliptic              = true;
+        data.higher_order_elements = degree > 1;
+        data.smoother_sweeps       = 2;
+        data.aggregation_threshold = 0.02;
+        amg.initialize(system_matrix, data);
+        SolverControl control(5000, krylov_tolerance * residual.l2_norm());
+        SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
+          control,
+          SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(200));
+        gmres.solve(system_matrix, increment, residual, amg);
+        its = control.last_step();
+      }
+    constraints.distribute(increment);
+    return its;
+  }
+
+  void
+  ElasticityModel::apply_increment(const double step)
+  {
+    solution = base;
+    solution.add(step, increment);
+    ghosted = solution;
+  }
+
+  double
+  ElasticityModel::energy_norm(const TrilinosWrappers::MPI::Vector &v) const
+  {
+    TrilinosWrappers::MPI::Vector w(v), aw(locally_owned, comm);
+    for (const auto &line : constraints.get_lines())
+      if (locally_owned.is_element(line.index))
+        w(line.index) = 0.;
+    w.compress(VectorOperation::insert);
+    bulk_matrix.vmult(aw, w);
+    return std::sqrt(std::max(0., w * aw));
+  }
+
+  double
+  ElasticityModel::increment_energy_norm() const
+  {
+    return energy_norm(increment);
+  }
+
+  double
+  ElasticityModel::solution_energy_norm() const
+  {
+    return energy_norm(solution);
+  }
+
+  std::vector<double>
+  ElasticityModel::deflection_at(const std::vector<Point<2>> &points) const
+  {
+    std::vector<double> value(points.size(), 0.), owner(points.size(), 0.);
+    for (unsigned int p = 0; p < points.size(); ++p)
+      {
+        const Point<3> x(points[p][0], points[p][1], 0.);
+        try
+          {
+            const auto found =
+              GridTools::find_active_cell_around_point(mapping, dof_handler, x);
+            if (found.first.state() != IteratorState::valid ||
+                !found.first->is_locally_owned())
+              continue;
+            const Quadrature<3> qp(
+              GeometryInfo<3>::project_to_unit_cell(found.second));
+            FEValues<3>    fv(mapping, fe, qp, update_values);
+            std::vector<Vector<double>> v(1, Vector<double>(3));
+            fv.reinit(found.first);
+            fv.get_function_values(ghosted, v);
+            value[p] = v[0](2);
+            owner[p] = 1.;
+          }
+        catch (...)
+          {
+            // the point is not in a locally owned cell / not in the mesh
+          }
+      }
+    Utilities::MPI::sum(value, comm, value);
+    Utilities::MPI::sum(owner, comm, owner);
+    for (unsigned int p = 0; p < points.size(); ++p)
+      value[p] = owner[p] > 0 ? value[p] / owner[p] :
+                                std::numeric_limits<double>::quiet_NaN();
+    return value;
+  }
+
+  CycleResults
+  ElasticityModel::postprocess(const std::vector<Point<2>> &probes)
+  {
+    CycleResults res;
+    ghosted = solution;
+
+    // Contact quantities at the quadrature points of the contact faces.
+    const QGauss<2> face_quadrature(degree + 3);
+    FEFaceValues<3> fvf(mapping, fe, face_quadrature,
+                        update_values | update_gradients |
+                          update_quadrature_points | update_JxW_values |
+                          update_normal_vectors);
+    std::vector<Vector<double>> u_values(face_quadrature.size(),
+                                         Vector<double>(3));
+    std::vector<std::vector<Tensor<1, 3>>> u_grads(
+      face_quadrature.size(), std::vector<Tensor<1, 3>>(3));
+    double area = 0., force = 0., stick_area = 0., slip_area = 0.,
+           max_pressure = 0., max_penetration = -1e300, max_ratio = 0.;
+    Tensor<1, 3> tangential_force;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == contact_id)
+            {
+              fvf.reinit(cell, f);
+              fvf.get_function_values(ghosted, u_values);
+              fvf.get_function_gradients(ghosted, u_grads);
+              const double r = nitsche_r(cell, f);
+              for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+                {
+                  const Tensor<1, 3> nrm = fvf.normal_vector(q);
+                  Tensor<1, 3>       u;
+                  Tensor<2, 3>       grad;
+                  for (unsigned int a = 0; a < 3; ++a)
+                    {
+                      u[a]    = u_values[q](a);
+                      grad[a] = u_grads[q][a];
+                    }
+                  const Tensor<1, 3> sn =
+                    stress(grad, prm.lambda(), prm.mu()) * nrm;
+                  PointInput in;
+                  in.normal  = nrm;
+                  in.u_n     = u * nrm;
+                  in.sigma_n = nrm * sn;
+                  in.sigma_t = sn - in.sigma_n * nrm;
+                  in.slip    = u - in.u_n * nrm;
+                  const Point<3> &x = fvf.quadrature_point(q);
+                  in.gap      = x[2] - obstacle.height(Point<2>(x[0], x[1]));
+                  in.r        = r;
+                  in.theta    = prm.theta;
+                  in.friction = prm.friction;
+                  const PointState st =
+                    evaluate_contact_point(in, NonlinearScheme::newton);
+                  const double JxW = fvf.JxW(q);
+                  max_penetration  = std::max(max_penetration, in.u_n - in.gap);
+                  if (st.lambda_n < 0.)
+                    {
+                      area += JxW;
+                      force += -st.lambda_n * JxW;
+                      max_pressure = std::max(max_pressure, -st.lambda_n);
+                      if (st.status == PointStatus::slip)
+                        slip_area += JxW;
+                      else
+                        stick_area += JxW;
+                      max_ratio = std::max(max_ratio,
+                                           st.lambda_t.norm() / -st.lambda_n);
+                    }
+                  // the obstacle acts on the body with the traction
+                  // Lambda_n n + Lambda_t
+                  tangential_force += st.lambda_t * JxW;
+                }
+            }
+    res.contact_area  = Utilities::MPI::sum(area, comm);
+    res.contact_force = Utilities::MPI::sum(force, comm);
+
+    // Extreme deflections over the nodes.
+    double wmin = std::numeric_limits<double>::max(), wmax = -wmin;
+    const IndexSet u3 =
+      DoFTools::extract_dofs(dof_handler, ComponentMask({false, false, true}));
+    for (const auto i : u3)
+      if (locally_owned.is_element(i))
+        {
+          const double v = solution(i);
+          wmin           = std::min(wmin, v);
+          wmax           = std::max(wmax, v);
+        }
+    res.min_deflection = Utilities::MPI::min(wmin, comm);
+    res.max_deflection = Utilities::MPI::max(wmax, comm);
+    res.probes         = deflection_at(probes);
+
+    res.extra = {
+      {"max_contact_pressure", Utilities::MPI::max(max_pressure, comm)},
+      {"max_penetration", Utilities::MPI::max(max_penetration, comm)},
+      {"stick_area", Utilities::MPI::sum(stick_area, comm)},
+      {"slip_area", Utilities::MPI::sum(slip_area, comm)},
+      {"tangential_force_x",
+       -Utilities::MPI::sum(tangential_force[0], comm)},
+      {"tangential_force_y",
+       -Utilities::MPI::sum(tangential_force[1], comm)},
+      {"max_friction_ratio", Utilities::MPI::max(max_ratio, comm)}};
+
+    if (exact_solution)
+      {
+        Vector<float> cellwise(triangulation.n_active_cells());
+        const QGauss<3> q(degree + 3);
+        VectorTools::integrate_difference(mapping, dof_handler, ghosted,
+                                          *exact_solution, cellwise, q,
+                                          VectorTools::L2_norm);
+        const double l2 = VectorTools::compute_global_error(
+          triangulation, cellwise, VectorTools::L2_norm);
+        VectorTools::integrate_difference(mapping, dof_handler, ghosted,
+                                          *exact_solution, cellwise, q,
+                                          VectorTools::H1_seminorm);
+        const double h1 = VectorTools::compute_global_error(
+          triangulation, cellwise, VectorTools::H1_seminorm);
+        // Nodal error: interpolate the exact solution (exact to round-off
+        // for polynomial solutions in the space).
+        TrilinosWrappers::MPI::Vector interp(locally_owned, comm);
+        VectorTools::interpolate(mapping, dof_handler, *exact_solution, interp);
+        interp -= solution;
+        res.errors = {{"L2", l2}, {"H1", h1}, {"Linf_nodes", interp.linfty_norm()}};
+      }
+    return res;
+  }
+
+  std::vector<std::pair<std::string, std::string>>
+  ElasticityModel::write_graphical_output(const std::string &directory,
+                                          const unsigned int cycle) const
+  {
+    std::vector<std::pair<std::string, std::string>> written;
+    const std::vector<std::string> names(3, "displacement");
+    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      interpretation(3, DataComponentInterpretation::component_is_part_of_vector);
+
+    {
+      StressPostprocessor stress_post(prm.lambda(), prm.mu());
+      DataOut<3>          data_out;
+      data_out.attach_dof_handler(dof_handler);
+      data_out.add_data_vector(ghosted, names, DataOut<3>::type_dof_data,
+                               interpretation);
+      data_out.add_data_vector(ghosted, stress_post);
+      Vector<float> subdomain(triangulation.n_active_cells());
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+          subdomain(cell->active_cell_index()) = triangulation.locally_owned_subdomain();
+      data_out.add_data_vector(subdomain, "subdomain");
+      data_out.build_patches(mapping, degree);
+      written.emplace_back("solution",
+                           data_out.write_vtu_with_pvtu_record(
+                             directory + "/", "solution", cycle, comm, 2));
+    }
+    {
+      ContactPostprocessor contact_post(prm, obstacle);
+      ContactFaces         faces;
+      faces.attach_dof_handler(dof_handler);
+      faces.add_data_vector(ghosted, names, DataOutFaces<3>::type_dof_data,
+                            interpretation);
+      faces.add_data_vector(ghosted, contact_post);
+      faces.build_patches(mapping, degree + 2);
+      // DataOutFaces has no pvtu helper: write pieces and the record here.
+      const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+      const std::string  base =
+        "contact-" + Utilities::int_to_string(cycle, 2);
+      std::ofstream piece(directory + "/" + base + "." +
+                          Utilities::int_to_string(rank, 4) + ".vtu");
+      faces.write_vtu(piece);
+      if (rank == 0)
+        {
+          std::vector<std::string> pieces;
+          for (unsigned int p = 0; p < Utilities::MPI::n_mpi_processes(comm);
+               ++p)
+            pieces.push_back(base + "." + Utilities::int_to_string(p, 4) +
+                             ".vtu");
+          std::ofstream master(directory + "/" + base + ".pvtu");
+          faces.write_pvtu_record(master, pieces);
+        }
+      written.emplace_back("contact", base + ".pvtu");
+    }
+    return written;
+  }
+} // namespace NitscheContact
