@@ -90,33 +90,18 @@ namespace NitscheContact
     (void)cycle;
     Timer                      timer;
     std::vector<std::uint64_t> history;
-    bool                       damping        = prm.line_search && prm.damping_after == 0;
-    double                     last_increment = std::numeric_limits<double>::max();
-    unsigned int               solves         = 0;
-    converged                                 = false;
+    bool         damping = prm.line_search && prm.damping_after == 0;
+    unsigned int solves  = 0;
+    converged            = false;
 
-    for (unsigned int k = 0;; ++k)
+    for (;;)
       {
         timer.restart();
         const ContactCounts c = model.assemble(prm.scheme, true);
         t.assembly += timer.wall_time();
-
-        const bool status_unchanged = (k > 0 && c.n_changed == 0);
-        if (status_unchanged && last_increment <= prm.tolerance)
-          {
-            converged = true;
-            if (prm.print_iterations)
-              pcout << "    converged: contact status unchanged and "
-                       "|dU|_a <= "
-                    << prm.tolerance << " |U|_a" << std::endl;
-            records.back().counts = c;
-            break;
-          }
+        records.back().counts = c;
         if (solves >= prm.max_iterations)
-          {
-            records.back().counts = c;
-            break;
-          }
+          break;
 
         // A contact status seen two or more iterations ago coming back
         // means the full-step iteration cycles: switch to damped steps.
@@ -127,7 +112,7 @@ namespace NitscheContact
                 {
                   damping = true;
                   pcout << "    contact status cycles: switching to damped "
-                           "steps (backtracking on |R|)"
+                           "steps"
                         << std::endl;
                   break;
                 }
@@ -135,8 +120,7 @@ namespace NitscheContact
               {
                 damping = true;
                 pcout << "    no convergence after " << solves
-                      << " full steps: switching to damped steps "
-                         "(backtracking on |R|)"
+                      << " full steps: switching to damped steps"
                       << std::endl;
               }
           }
@@ -147,45 +131,39 @@ namespace NitscheContact
         t.solve += timer.wall_time();
         ++solves;
 
-        double step = 1.;
-        model.apply_increment(step);
-        if (prm.line_search && std::isfinite(c.energy))
+        // Convergence: the Newton correction at the current iterate is
+        // negligible in the energy norm. Points that keep flipping status
+        // with |s_n| ~ 0 (grazing contact of a flat plate on a flat
+        // obstacle) then do not matter, and a status that does matter
+        // produces a large correction.
+        model.apply_increment(1.);
+        const double du       = model.increment_energy_norm();
+        const double u        = model.solution_energy_norm();
+        const double relative = (u > 0.) ? du / u : (du == 0. ? 0. : 1.);
+        double       step     = 1.;
+        if (relative > prm.tolerance && damping)
           {
-            // An energy exists (theta = 1, frictionless): Newton directions
-            // are descent directions; backtrack until J decreases.
-            for (; step >= 1. / 1024.; step *= 0.5)
-              {
-                model.apply_increment(step);
-                timer.restart();
-                const ContactCounts trial = model.assemble(prm.scheme, false);
-                t.assembly += timer.wall_time();
-                if (trial.energy <= c.energy)
-                  break;
-              }
-            if (step < 1. / 1024.)
-              {
-                step = 1. / 1024.;
-                model.apply_increment(step);
-              }
-          }
-        else if (damping)
-          {
-            // Backtracking (Armijo) on |R|; if no step length down to 1/64
-            // decreases |R| sufficiently, take the best one tried.
-            const double r0        = c.residual_norm;
-            double       best_step = 1., best_norm = 0.;
+            // Backtracking. With an energy (theta = 1, frictionless) the
+            // Newton direction is a descent direction of J; otherwise
+            // Armijo on |R|. If no step down to 1/64 is accepted, take the
+            // best one tried.
+            const bool   use_energy = std::isfinite(c.energy);
+            const double m0   = use_energy ? c.energy : c.residual_norm;
+            double       best_step = 1., best_merit = 0.;
             for (; step >= 1. / 64.; step *= 0.5)
               {
                 model.apply_increment(step);
                 timer.restart();
                 const ContactCounts trial = model.assemble(prm.scheme, false);
                 t.assembly += timer.wall_time();
-                if (step == 1. || trial.residual_norm < best_norm)
+                const double m =
+                  use_energy ? trial.energy : trial.residual_norm;
+                if (step == 1. || m < best_merit)
                   {
-                    best_step = step;
-                    best_norm = trial.residual_norm;
+                    best_step  = step;
+                    best_merit = m;
                   }
-                if (trial.residual_norm <= (1. - 1e-4 * step) * r0)
+                if (use_energy ? (m < m0) : (m <= (1. - 1e-4 * step) * m0))
                   break;
               }
             if (step < 1. / 64.)
@@ -194,10 +172,6 @@ namespace NitscheContact
                 model.apply_increment(step);
               }
           }
-
-        const double du = step * model.increment_energy_norm();
-        const double u  = model.solution_energy_norm();
-        last_increment  = (u > 0.) ? du / u : (du == 0. ? 0. : 1.);
 
         if (prm.print_iterations)
           {
@@ -208,12 +182,24 @@ namespace NitscheContact
               line << " (stick " << c.n_stick << ", slip " << c.n_slip
                    << ")";
             line << ", changed " << c.n_changed << std::scientific
-                 << std::setprecision(3) << ", |dU|_a/|U|_a "
-                 << last_increment << ", |R| " << c.residual_norm;
+                 << std::setprecision(3) << ", |dU|_a/|U|_a " << relative
+                 << ", |R| " << c.residual_norm;
             if (step < 1.)
               line << std::fixed << std::setprecision(4) << ", step "
                    << step;
             pcout << line.str() << std::endl;
+          }
+        if (relative <= prm.tolerance)
+          {
+            converged = true;
+            // status and counts at the converged iterate
+            timer.restart();
+            records.back().counts = model.assemble(prm.scheme, false);
+            t.assembly += timer.wall_time();
+            if (prm.print_iterations)
+              pcout << "    converged: |dU|_a <= " << prm.tolerance
+                    << " |U|_a" << std::endl;
+            break;
           }
       }
     return solves;

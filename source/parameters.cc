@@ -276,10 +276,13 @@ namespace NitscheContact
         "generalized Jacobian; 'fixed point': the paper's fixed point "
         "(contact status, slip direction and friction threshold frozen "
         "at the previous iterate). Identical for frictionless problems.");
-      prm.declare_entry("Tolerance", "1e-10", Patterns::Double(),
-                        "Stop when the contact status is unchanged and the "
-                        "energy norm of the increment is below Tolerance "
-                        "times the energy norm of the solution; > 0.");
+      prm.declare_entry(
+        "Tolerance", "1e-8", Patterns::Double(),
+        "Stop when the energy norm (bulk elastic energy) of the Newton "
+        "correction at the current iterate is below Tolerance times the "
+        "energy norm of the solution; > 0. Thin 3D plates have a "
+        "round-off floor near 1e-7 (condition number ~ (L/t)^4): use "
+        "1e-6 there.");
       prm.declare_entry("Maximum iterations", "50",
                         Patterns::Integer(1, 100000),
                         "Iteration limit per cycle.");
