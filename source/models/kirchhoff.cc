@@ -13,6 +13,10 @@
 
 #include <nitsche_contact/models/kirchhoff.h>
 
+#include <Amesos_Mumps.h>
+#include <Epetra_LinearProblem.h>
+#include <Teuchos_ParameterList.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -45,7 +49,7 @@ namespace NitscheContact
     bool
     is_number(const std::string &text, double &value)
     {
-      const std::string t = Utilities::trim(text);
+      const std::string t = dealii::Utilities::trim(text);
       try
         {
           std::size_t pos = 0;
@@ -144,10 +148,10 @@ namespace NitscheContact
     , quadrature(6)
     , obstacle(common)
   {
-    if (Utilities::MPI::n_mpi_processes(comm) > 1)
+    if (dealii::Utilities::MPI::n_mpi_processes(comm) > 1)
       throw InputError(
         "invalid value 'kirchhoff' for parameter 'Model' with " +
-        std::to_string(Utilities::MPI::n_mpi_processes(comm)) +
+        std::to_string(dealii::Utilities::MPI::n_mpi_processes(comm)) +
         " MPI processes: the Kirchhoff model runs on one process (serial "
         "mesh and sparse direct solver); run it without mpirun or with -np "
         "1");
@@ -165,8 +169,8 @@ namespace NitscheContact
       kappa        = param.get_double("Obstacle compliance kappa");
       n_quadrature = param.get_integer("Quadrature points");
       direct_solver = param.get("Direct solver");
-      const std::string grad = Utilities::trim(param.get("Exact gradient"));
-      const std::string hess = Utilities::trim(param.get("Exact Hessian"));
+      const std::string grad = dealii::Utilities::trim(param.get("Exact gradient"));
+      const std::string hess = dealii::Utilities::trim(param.get("Exact Hessian"));
       if (!grad.empty())
         exact_gradient = make_parsed_function<2>(grad,
                                                  prm.exact_constants,
@@ -686,16 +690,48 @@ namespace NitscheContact
     double *bp = b.trilinos_vector()[0];
     std::copy(rhs.begin(), rhs.end(), bp);
 
-    SolverControl                                    control(1, 0.);
-    TrilinosWrappers::SolverDirect::AdditionalData   data(false, direct_solver);
-    TrilinosWrappers::SolverDirect                   solver(control, data);
-    solver.solve(system_matrix, x, b);
+    if (direct_solver == "Amesos_Mumps")
+      {
+        // MUMPS through Amesos directly (not TrilinosWrappers::SolverDirect)
+        // to request the symmetric LDL^T factorisation when the Jacobian is
+        // symmetric (theta = 1), which halves the elimination work.
+        Epetra_LinearProblem problem(
+          const_cast<Epetra_CrsMatrix *>(&system_matrix.trilinos_matrix()),
+          &x.trilinos_vector(),
+          &b.trilinos_vector());
+        Amesos_Mumps           mumps(problem);
+        Teuchos::ParameterList list;
+        list.set("MatrixProperty",
+                 jacobian_is_symmetric() ? "symmetric" : "general");
+        mumps.SetParameters(list);
+        AssertThrow(mumps.SymbolicFactorization() == 0 &&
+                      mumps.NumericFactorization() == 0 && mumps.Solve() == 0,
+                    ExcMessage("MUMPS failed to solve the linear system of "
+                               "the Kirchhoff model."));
+      }
+    else
+      {
+        SolverControl                                  control(1, 0.);
+        TrilinosWrappers::SolverDirect::AdditionalData data(false,
+                                                            direct_solver);
+        TrilinosWrappers::SolverDirect                 solver(control, data);
+        solver.solve(system_matrix, x, b);
+      }
 
     const double *xp = x.trilinos_vector()[0];
     std::copy(xp, xp + increment.size(), increment.begin());
     constraints.distribute(increment);
     base = solution;
     return 0;
+  }
+
+
+
+  bool
+  KirchhoffModel::jacobian_is_symmetric() const
+  {
+    // theta = 1 (or no sigma_n terms): the kernel Jacobian is symmetric.
+    return !kit.sigma_terms || prm.theta == 1.;
   }
 
 

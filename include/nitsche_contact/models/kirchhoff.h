@@ -120,6 +120,8 @@ namespace NitscheContact
     point_input(unsigned int c, unsigned int q, const double *u_local) const;
     double
     energy_norm(const dealii::Vector<double> &v) const;
+    bool
+    jacobian_is_symmetric() const;
     /// Locate the cell containing p and the unit point; false if outside.
     bool
     locate(const dealii::Point<2> &p,
