@@ -91,6 +91,10 @@ namespace NitscheContact
     double       r        = 1.; ///< Nitsche parameter (stress per length)
     double       theta    = 1.; ///< Nitsche variant 1, 0, -1
     double       friction = 0.; ///< Coulomb coefficient F >= 0
+    /// Factor c in Lambda_n = c [s_n]_- (and in its derivative). 1 for a
+    /// rigid obstacle; 1/(1 + kappa r) for an obstacle of compliance
+    /// kappa >= 0 (Kirchhoff model, theory.md section 4.5).
+    double       lambda_scale = 1.;
   };
 
   /// Output of the kernel at one quadrature point.
@@ -98,7 +102,7 @@ namespace NitscheContact
   {
     double       s_n      = 0.; ///< sigma_n - r (u_n - g)
     double       lambda_n = 0.; ///< [s_n]_-
-    double       dlambda_n = 0.; ///< d lambda_n / d s_n (0 or 1)
+    double       dlambda_n = 0.; ///< d lambda_n / d s_n (0 or lambda_scale)
     Tensor<1, 3> q;             ///< sigma_t - r s_t
     double       tau = 0.;      ///< friction threshold -F lambda_n
     Tensor<1, 3> lambda_t;      ///< P_{B(0,tau)}(q)
@@ -118,8 +122,8 @@ namespace NitscheContact
   {
     PointState st;
     st.s_n       = in.sigma_n - in.r * (in.u_n - in.gap);
-    st.lambda_n  = negative_part(st.s_n);
-    st.dlambda_n = (st.s_n <= 0.) ? 1. : 0.;
+    st.lambda_n  = in.lambda_scale * negative_part(st.s_n);
+    st.dlambda_n = (st.s_n <= 0.) ? in.lambda_scale : 0.;
     st.status    = (st.s_n <= 0.) ? PointStatus::stick : PointStatus::inactive;
 
     if (in.friction > 0.)

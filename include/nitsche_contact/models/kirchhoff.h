@@ -1,0 +1,178 @@
+// Model 3: the Kirchhoff-Love plate discretised with the C^1 bicubic Hermite
+// (Bogner-Fox-Schmit) element, in contact with a rigid (or compliant)
+// obstacle below it. Two contact formulations (theory.md section 4):
+//  - "gsv": the Gustafsson-Stenberg-Videman stabilised method (the paper's
+//    eq. 18-19, corrected), written as the generic Nitsche kernel with the
+//    plate equilibrium operator sigma_n(w) = f - D Delta^2 w, r = 1/(alpha
+//    h^4), plus the obstacle compliance factor 1/(1 + kappa r);
+//  - "nitsche": the paper's "Kirchhoff with Nitsche" variant, the 3D Nitsche
+//    term with Kirchhoff kinematics on the bottom face, sigma_n = lambda
+//    (t/2) Delta w, r = gamma0 E / t.
+// Uniform Cartesian meshes only, one MPI process, sparse direct solver.
+#ifndef nitsche_contact_models_kirchhoff_h
+#define nitsche_contact_models_kirchhoff_h
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/table.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping_cartesian.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <nitsche_contact/fe/fe_bicubic_hermite.h>
+#include <nitsche_contact/model.h>
+#include <nitsche_contact/parameters.h>
+
+#include <memory>
+
+namespace NitscheContact
+{
+  class KirchhoffModel : public ContactModel
+  {
+  public:
+    /// Declare the subsection "Kirchhoff".
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    KirchhoffModel(const CommonParameters   &common,
+                   dealii::ParameterHandler &prm,
+                   MPI_Comm                  comm);
+
+    std::string
+    name() const override
+    {
+      return "kirchhoff";
+    }
+    std::vector<std::pair<std::string, std::string>>
+    description() const override;
+    void
+    setup_cycle(unsigned int cycle) override;
+    std::uint64_t
+    n_dofs() const override;
+    double
+    mesh_size() const override;
+    ContactCounts
+    assemble(NonlinearScheme scheme, bool with_matrix) override;
+    unsigned int
+    solve_linear() override;
+    void
+    apply_increment(double step) override;
+    double
+    increment_energy_norm() const override;
+    double
+    solution_energy_norm() const override;
+    CycleResults
+    postprocess(const std::vector<dealii::Point<2>> &probes) override;
+    std::vector<double>
+    deflection_at(const std::vector<dealii::Point<2>> &points) const override;
+    std::vector<std::pair<std::string, std::string>>
+    write_graphical_output(const std::string &directory,
+                           unsigned int       cycle) const override;
+
+    enum class Formulation
+    {
+      gsv,
+      nitsche
+    };
+
+  private:
+    /// Everything that is the same on every cell of the uniform mesh:
+    /// shape data at the quadrature points, the bending matrix, and the
+    /// contact Jacobian of one quadrature point in the inactive and the
+    /// active state (computed with the generic kernel).
+    struct CellKit
+    {
+      dealii::Tensor<1, 2>     h;
+      double                   h_K = 0.; ///< max(hx, hy)
+      double                   r   = 0.; ///< kernel parameter
+      double                   lambda_scale = 1.;
+      bool                     sigma_terms  = true; ///< false: pure penalty
+      dealii::Table<2, double> values;      ///< N_i(x_q)
+      dealii::Table<2, double> laplacians;  ///< Delta N_i(x_q)
+      dealii::Table<2, double> bilaplacians; ///< Delta^2 N_i(x_q)
+      dealii::Table<2, dealii::Tensor<1, 2>> gradients;
+      dealii::Table<2, dealii::Tensor<2, 2>> hessians;
+      std::vector<double>                    JxW;
+      std::vector<dealii::Point<2>>          unit_points;
+      dealii::FullMatrix<double>             bending;
+      /// sum over q of the kernel Jacobian at inactive points
+      dealii::FullMatrix<double> contact_inactive;
+      /// per q: Jacobian(active) - Jacobian(inactive)
+      std::vector<dealii::FullMatrix<double>> contact_switch;
+      /// per q: linearisations of each shape function for the kernel
+      std::vector<std::vector<ShapeContactData>> shapes;
+      std::vector<double>                        load_shape; ///< int N_i
+    };
+
+    void
+    make_grid();
+    void
+    setup_dofs();
+    void
+    build_cell_kit();
+    /// Kernel input at quadrature point q of cell c for local values U_c.
+    PointInput
+    point_input(unsigned int c, unsigned int q, const double *u_local) const;
+    double
+    energy_norm(const dealii::Vector<double> &v) const;
+    bool
+    jacobian_is_symmetric() const;
+    /// Locate the cell containing p and the unit point; false if outside.
+    bool
+    locate(const dealii::Point<2> &p,
+           unsigned int           &cell_index,
+           dealii::Point<2>       &unit) const;
+    double
+    load_at(unsigned int c, unsigned int q) const;
+    double
+    psi_at(unsigned int c, unsigned int q) const;
+
+    const CommonParameters &prm;
+    MPI_Comm                comm;
+
+    // "Kirchhoff" subsection
+    Formulation  formulation;
+    double       alpha_D;  ///< alpha D (dimensionless)
+    double       kappa;    ///< obstacle compliance
+    unsigned int n_quadrature;
+    std::string  direct_solver;
+    std::unique_ptr<dealii::FunctionParser<2>> exact_value, exact_gradient,
+      exact_hessian;
+
+    double D;   ///< bending stiffness
+    double lambda_eps; ///< lambda_L t/2 (Kirchhoff with Nitsche)
+
+    dealii::Triangulation<2>       triangulation;
+    FE_BicubicHermite<2>           fe;
+    dealii::DoFHandler<2>          dof_handler;
+    dealii::MappingCartesian<2>    mapping;
+    dealii::AffineConstraints<double> constraints;
+    dealii::QGauss<2>              quadrature;
+
+    unsigned int nx = 0, ny = 0; ///< cells per direction
+    /// Active cells in lexicographic order (ix + nx iy).
+    std::vector<dealii::DoFHandler<2>::active_cell_iterator> cells;
+    /// 16 global dof indices per cell, same order.
+    std::vector<dealii::types::global_dof_index> cell_dofs;
+
+    CellKit kit;
+    bool    load_is_constant = true, psi_is_constant = true;
+    double  load_constant = 0., psi_constant = 0.;
+    std::vector<double> load_values, psi_values; ///< per (cell, q)
+
+    dealii::Vector<double> solution, base, increment;
+    dealii::TrilinosWrappers::SparseMatrix system_matrix;
+    dealii::Vector<double>                 rhs; ///< -R(U), condensed
+    std::vector<unsigned char>             previous_status;
+
+    std::unique_ptr<dealii::FunctionParser<2>> load_function;
+    ObstacleSurface                            obstacle;
+  };
+} // namespace NitscheContact
+
+#endif

@@ -1,0 +1,994 @@
+// Model 3: Kirchhoff-Love plate, bicubic Hermite element, GSV stabilised
+// obstacle term or "Kirchhoff with Nitsche". See doc/kirchhoff.md for the
+// formulation as implemented and theory.md section 4 for the derivations.
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/numerics/data_out.h>
+
+#include <nitsche_contact/models/kirchhoff.h>
+
+#include <Amesos_Mumps.h>
+#include <Epetra_LinearProblem.h>
+#include <Teuchos_ParameterList.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace NitscheContact
+{
+  using namespace dealii;
+
+  namespace
+  {
+    std::string
+    str(const double x)
+    {
+      std::ostringstream s;
+      s << x;
+      return s.str();
+    }
+
+    [[noreturn]] void
+    bad_value(const std::string &entry,
+              const std::string &value,
+              const std::string &allowed)
+    {
+      throw InputError("invalid value '" + value + "' for parameter '" +
+                       entry + "': " + allowed);
+    }
+
+    /// True (and the value) if the expression is a plain number.
+    bool
+    is_number(const std::string &text, double &value)
+    {
+      const std::string t = dealii::Utilities::trim(text);
+      try
+        {
+          std::size_t pos = 0;
+          value           = std::stod(t, &pos);
+          return pos == t.size();
+        }
+      catch (const std::exception &)
+        {
+          return false;
+        }
+    }
+
+    /// Fourth-order central difference weights for a first derivative at
+    /// offsets -2..2 (times 1/delta).
+    constexpr double fd1[5] = {1. / 12., -8. / 12., 0., 8. / 12., -1. / 12.};
+    /// ... and for a second derivative (times 1/delta^2).
+    constexpr double fd2[5] = {-1. / 12., 16. / 12., -30. / 12., 16. / 12.,
+                               -1. / 12.};
+  } // namespace
+
+
+
+  void
+  KirchhoffModel::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Kirchhoff");
+    {
+      prm.declare_entry(
+        "Contact formulation",
+        "gsv",
+        Patterns::Selection("gsv|nitsche"),
+        "'gsv': the Gustafsson-Stenberg-Videman stabilised method (paper "
+        "eq. 18-19, corrected; theory.md 4.4-4.5): p_h = 1/(kappa + alpha "
+        "h^4) [psi - w + alpha h^4 (D Delta^2 w - f)]_+ with the Nitsche "
+        "variant 'Contact/Nitsche theta'. 'nitsche': the paper's 'Kirchhoff "
+        "with Nitsche' (3D Nitsche term with Kirchhoff kinematics on the "
+        "bottom face, theory.md 4.7): sigma_n = lambda (t/2) Delta w, r = "
+        "gamma0 E / t with 'Contact/Nitsche gamma0' (theta = 1 needs gamma0 "
+        "> about 1.4).");
+      prm.declare_entry(
+        "Stabilisation alpha",
+        "1e-4",
+        Patterns::Double(0.),
+        "GSV stabilisation parameter given as the dimensionless product "
+        "alpha*D (alpha = value/D), with h_K = the longest side of the cell; "
+        "r = 1/(alpha h_K^4). Coercive (safe) range for nu = 0.3: theta = 1 "
+        "needs alpha*D < 1.89e-4, theta = 0 needs alpha*D < 7.5e-4, theta = "
+        "-1 any alpha*D > 0. 0 gives the pure penalty method p = [psi - "
+        "w]_+ / kappa (then kappa must be > 0). Ignored by the 'nitsche' "
+        "formulation.");
+      prm.declare_entry(
+        "Obstacle compliance kappa",
+        "0",
+        Patterns::Double(0.),
+        "Compliance kappa >= 0 of the obstacle (length per pressure): the "
+        "contact law is p >= 0, w - psi + kappa p >= 0, complementarity. 0: "
+        "rigid obstacle (pure Nitsche). Implemented as the factor 1/(1 + "
+        "kappa r) on the Nitsche contact stress.");
+      prm.declare_entry(
+        "Quadrature points",
+        "6",
+        Patterns::Integer(4, 12),
+        "Gauss points per direction on each cell for the contact terms, the "
+        "load and the errors (the bending form is exact from 4 on; the "
+        "contact integrand has kinks, 6 is recommended).");
+      prm.declare_entry(
+        "Exact gradient",
+        "",
+        Patterns::Anything(),
+        "Optional 'w_x; w_y' of the exact solution (variables x, y and the "
+        "constants of 'Reference solution/Function constants'). If empty, "
+        "the H1 error uses fourth-order central differences of 'Reference "
+        "solution/Exact solution' with step 1e-3 max(Lx, Ly).");
+      prm.declare_entry(
+        "Exact Hessian",
+        "",
+        Patterns::Anything(),
+        "Optional 'w_xx; w_xy; w_yy' of the exact solution. If empty, the H2 "
+        "error uses fourth-order central differences (as above).");
+      prm.declare_entry("Direct solver",
+                        "Amesos_Mumps",
+                        Patterns::Selection("Amesos_Mumps|Amesos_Klu"),
+                        "Trilinos Amesos sparse direct solver.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  KirchhoffModel::KirchhoffModel(const CommonParameters &common,
+                                 ParameterHandler       &param,
+                                 MPI_Comm                comm)
+    : prm(common)
+    , comm(comm)
+    , dof_handler(triangulation)
+    , quadrature(6)
+    , obstacle(common)
+  {
+    if (dealii::Utilities::MPI::n_mpi_processes(comm) > 1)
+      throw InputError(
+        "invalid value 'kirchhoff' for parameter 'Model' with " +
+        std::to_string(dealii::Utilities::MPI::n_mpi_processes(comm)) +
+        " MPI processes: the Kirchhoff model runs on one process (serial "
+        "mesh and sparse direct solver); run it without mpirun or with -np "
+        "1");
+    if (prm.friction != 0.)
+      bad_value("Contact/Friction coefficient",
+                str(prm.friction),
+                "the Kirchhoff model is frictionless; allowed is 0");
+
+    param.enter_subsection("Kirchhoff");
+    {
+      formulation = param.get("Contact formulation") == "gsv" ?
+                      Formulation::gsv :
+                      Formulation::nitsche;
+      alpha_D      = param.get_double("Stabilisation alpha");
+      kappa        = param.get_double("Obstacle compliance kappa");
+      n_quadrature = param.get_integer("Quadrature points");
+      direct_solver = param.get("Direct solver");
+      const std::string grad = dealii::Utilities::trim(param.get("Exact gradient"));
+      const std::string hess = dealii::Utilities::trim(param.get("Exact Hessian"));
+      if (!grad.empty())
+        exact_gradient = make_parsed_function<2>(grad,
+                                                 prm.exact_constants,
+                                                 2,
+                                                 "Kirchhoff/Exact gradient");
+      if (!hess.empty())
+        exact_hessian = make_parsed_function<2>(hess,
+                                                prm.exact_constants,
+                                                3,
+                                                "Kirchhoff/Exact Hessian");
+    }
+    param.leave_subsection();
+
+    if (!(alpha_D >= 0.))
+      bad_value("Kirchhoff/Stabilisation alpha", str(alpha_D), "must be >= 0");
+    if (!(kappa >= 0.))
+      bad_value("Kirchhoff/Obstacle compliance kappa",
+                str(kappa),
+                "must be >= 0");
+    if (formulation == Formulation::gsv && alpha_D == 0. && kappa == 0.)
+      bad_value("Kirchhoff/Stabilisation alpha",
+                "0",
+                "alpha = 0 is the pure penalty method, which needs 'Obstacle "
+                "compliance kappa' > 0; use alpha*D > 0 for a rigid "
+                "obstacle");
+    if (prm.subdivisions.size() < 2)
+      bad_value("Geometry/Subdivisions", "", "expected 'nx, ny'");
+
+    if (!prm.exact_solution.empty())
+      exact_value = make_parsed_function<2>(prm.exact_solution,
+                                            prm.exact_constants,
+                                            1,
+                                            "Reference solution/Exact solution");
+    if ((exact_gradient || exact_hessian) && !exact_value)
+      bad_value("Kirchhoff/Exact gradient",
+                "...",
+                "an exact gradient or Hessian needs 'Reference "
+                "solution/Exact solution'");
+
+    load_function = make_parsed_function<2>(prm.load_expression,
+                                            prm.load_constants,
+                                            1,
+                                            "Load/Transverse load");
+    load_is_constant = is_number(prm.load_expression, load_constant);
+
+    D          = prm.bending_stiffness();
+    lambda_eps = prm.lambda() * 0.5 * prm.thickness;
+    quadrature = QGauss<2>(n_quadrature);
+  }
+
+
+
+  std::vector<std::pair<std::string, std::string>>
+  KirchhoffModel::description() const
+  {
+    std::vector<std::pair<std::string, std::string>> d;
+    d.emplace_back("element", "bicubic Hermite (Bogner-Fox-Schmit), C^1");
+    d.emplace_back("contact formulation",
+                   formulation == Formulation::gsv ?
+                     "gsv (Gustafsson-Stenberg-Videman stabilised)" :
+                     "nitsche (Kirchhoff kinematics in the 3D Nitsche term)");
+    d.emplace_back("theta", str(prm.theta));
+    if (formulation == Formulation::gsv)
+      {
+        d.emplace_back("alpha*D", str(alpha_D));
+        d.emplace_back("r", "1/(alpha h_K^4), h_K = longest cell side");
+      }
+    else
+      {
+        d.emplace_back("gamma0", str(prm.gamma0));
+        d.emplace_back("r", "gamma0 E / t = " +
+                              str(prm.gamma0 * prm.youngs_modulus /
+                                  prm.thickness));
+      }
+    d.emplace_back("kappa", str(kappa));
+    d.emplace_back("bending stiffness D", str(D));
+    d.emplace_back("obstacle convention",
+                   prm.obstacle_level_is_midplane ?
+                     "mid-plane (w >= z_obs)" :
+                     "bottom face (w >= z_obs + t/2)");
+    d.emplace_back("quadrature points per direction", str(n_quadrature));
+    d.emplace_back("direct solver", direct_solver);
+    return d;
+  }
+
+
+
+  void
+  KirchhoffModel::make_grid()
+  {
+    GridGenerator::subdivided_hyper_rectangle(
+      triangulation,
+      {prm.subdivisions[0], prm.subdivisions[1]},
+      Point<2>(0., 0.),
+      Point<2>(prm.length_x, prm.length_y),
+      /*colorize: ids 0..3 on x=0, x=Lx, y=0, y=Ly*/ true);
+    triangulation.refine_global(prm.initial_refinement);
+    nx = prm.subdivisions[0] << prm.initial_refinement;
+    ny = prm.subdivisions[1] << prm.initial_refinement;
+  }
+
+
+
+  void
+  KirchhoffModel::setup_dofs()
+  {
+    HermiteTools::check_mesh(triangulation);
+    dof_handler.distribute_dofs(fe);
+
+    constraints.clear();
+    for (unsigned int b = 0; b < 4; ++b)
+      {
+        const EdgeCondition e = prm.edges[b];
+        HermiteTools::make_zero_boundary_constraints(
+          dof_handler,
+          b,
+          e == EdgeCondition::clamped || e == EdgeCondition::simply_supported,
+          e == EdgeCondition::clamped || e == EdgeCondition::symmetry,
+          constraints);
+      }
+    constraints.close();
+
+    // Cells in lexicographic order; the mesh must be the uniform one.
+    const double hx = prm.length_x / nx, hy = prm.length_y / ny;
+    cells.assign(nx * ny, DoFHandler<2>::active_cell_iterator());
+    cell_dofs.resize(16 * nx * ny);
+    std::vector<types::global_dof_index> dofs(16);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        const Tensor<1, 2> h = FE_BicubicHermite<2>::cell_extents(cell);
+        AssertThrow(std::abs(h[0] - hx) < 1e-10 * hx &&
+                      std::abs(h[1] - hy) < 1e-10 * hy,
+                    ExcMessage("The Kirchhoff model needs a uniform mesh."));
+        const unsigned int ix =
+          static_cast<unsigned int>(cell->center()[0] / hx);
+        const unsigned int iy =
+          static_cast<unsigned int>(cell->center()[1] / hy);
+        const unsigned int c = ix + nx * iy;
+        cells[c]             = cell;
+        cell->get_dof_indices(dofs);
+        std::copy(dofs.begin(), dofs.end(), cell_dofs.begin() + 16 * c);
+      }
+
+    DynamicSparsityPattern dsp(dof_handler.n_dofs());
+    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+    const IndexSet owned = complete_index_set(dof_handler.n_dofs());
+    system_matrix.reinit(owned, owned, dsp, comm);
+    rhs.reinit(dof_handler.n_dofs());
+
+    build_cell_kit();
+
+    // Load and obstacle at the quadrature points (cached: parsing is slow).
+    const unsigned int nq = quadrature.size();
+    const double shift = prm.obstacle_level_is_midplane ? 0. : 0.5 * prm.thickness;
+    psi_is_constant = (prm.obstacle_type == "plane");
+    psi_constant    = prm.obstacle_level + shift;
+    load_values.clear();
+    psi_values.clear();
+    if (!load_is_constant)
+      load_values.resize(cells.size() * nq);
+    if (!psi_is_constant)
+      psi_values.resize(cells.size() * nq);
+    if (!load_is_constant || !psi_is_constant)
+      for (unsigned int c = 0; c < cells.size(); ++c)
+        {
+          const Point<2> x0 = cells[c]->vertex(0);
+          for (unsigned int q = 0; q < nq; ++q)
+            {
+              const Point<2> x(x0[0] + kit.unit_points[q][0] * kit.h[0],
+                               x0[1] + kit.unit_points[q][1] * kit.h[1]);
+              if (!load_is_constant)
+                load_values[c * nq + q] = load_function->value(x);
+              if (!psi_is_constant)
+                psi_values[c * nq + q] = obstacle.height(x) + shift;
+            }
+        }
+    previous_status.assign(cells.size() * nq, 255);
+  }
+
+
+
+  void
+  KirchhoffModel::build_cell_kit()
+  {
+    const unsigned int nq = quadrature.size();
+    FEValues<2>        fev(mapping,
+                    fe,
+                    quadrature,
+                    update_values | update_gradients | update_hessians |
+                      update_JxW_values);
+    fev.reinit(cells[0]);
+    kit.h   = FE_BicubicHermite<2>::cell_extents(cells[0]);
+    kit.h_K = std::max(kit.h[0], kit.h[1]);
+
+    if (formulation == Formulation::gsv)
+      {
+        if (alpha_D > 0.)
+          {
+            kit.r = D / (alpha_D * std::pow(kit.h_K, 4));
+            kit.lambda_scale = 1. / (1. + kappa * kit.r);
+            kit.sigma_terms  = true;
+          }
+        else
+          {
+            // alpha -> 0 limit: Lambda_n = [-(u_n - g)/kappa]_-, no
+            // sigma_n terms (pure penalty / elastic obstacle).
+            kit.r            = 1. / kappa;
+            kit.lambda_scale = 1.;
+            kit.sigma_terms  = false;
+          }
+      }
+    else
+      {
+        kit.r = prm.gamma0 * prm.youngs_modulus / prm.thickness;
+        kit.lambda_scale = 1. / (1. + kappa * kit.r);
+        kit.sigma_terms  = true;
+      }
+
+    kit.values.reinit(16, nq);
+    kit.laplacians.reinit(16, nq);
+    kit.bilaplacians.reinit(16, nq);
+    kit.gradients.reinit(16, nq);
+    kit.hessians.reinit(16, nq);
+    kit.JxW.resize(nq);
+    kit.unit_points = quadrature.get_points();
+    kit.load_shape.assign(16, 0.);
+    for (unsigned int q = 0; q < nq; ++q)
+      {
+        kit.JxW[q] = fev.JxW(q);
+        for (unsigned int i = 0; i < 16; ++i)
+          {
+            kit.values(i, q)    = fev.shape_value(i, q);
+            kit.gradients(i, q) = fev.shape_grad(i, q);
+            kit.hessians(i, q)  = fev.shape_hessian(i, q);
+            kit.laplacians(i, q) = trace(kit.hessians(i, q));
+            kit.bilaplacians(i, q) =
+              fe.bilaplacian(i, kit.unit_points[q], kit.h);
+            kit.load_shape[i] += kit.values(i, q) * kit.JxW[q];
+          }
+      }
+
+    // Bending: a(u,v) = int D [(1-nu) d2u : d2v + nu Lap u Lap v].
+    const double nu = prm.poisson_ratio;
+    kit.bending.reinit(16, 16);
+    for (unsigned int q = 0; q < nq; ++q)
+      for (unsigned int i = 0; i < 16; ++i)
+        for (unsigned int j = 0; j < 16; ++j)
+          kit.bending(i, j) +=
+            D *
+            ((1. - nu) *
+               scalar_product(kit.hessians(i, q), kit.hessians(j, q)) +
+             nu * kit.laplacians(i, q) * kit.laplacians(j, q)) *
+            kit.JxW[q];
+
+    // Linearisations for the kernel: u_n = -w, and
+    //   gsv:     sigma_n = f - D Delta^2 w  => d sigma_n = -D Delta^2 N_i,
+    //   nitsche: sigma_n = lambda (t/2) Delta w.
+    kit.shapes.assign(nq, std::vector<ShapeContactData>(16));
+    for (unsigned int q = 0; q < nq; ++q)
+      for (unsigned int i = 0; i < 16; ++i)
+        {
+          ShapeContactData &s = kit.shapes[q][i];
+          s.u_n               = -kit.values(i, q);
+          if (!kit.sigma_terms)
+            s.sigma_n = 0.;
+          else if (formulation == Formulation::gsv)
+            s.sigma_n = -D * kit.bilaplacians(i, q);
+          else
+            s.sigma_n = lambda_eps * kit.laplacians(i, q);
+        }
+
+    // The kernel's Jacobian of one point depends on the point only through
+    // the contact state (frictionless: dlambda_n = 0 or lambda_scale), so
+    // on a uniform mesh it is computed once per quadrature point and state.
+    PointInput in;
+    in.r            = kit.r;
+    in.theta        = kit.sigma_terms ? prm.theta : 0.;
+    in.lambda_scale = kit.lambda_scale;
+    PointState inactive, active;
+    active.dlambda_n = kit.lambda_scale;
+    active.status    = PointStatus::stick;
+    kit.contact_inactive.reinit(16, 16);
+    kit.contact_switch.assign(nq, FullMatrix<double>(16, 16));
+    Vector<double> dummy(16);
+    for (unsigned int q = 0; q < nq; ++q)
+      {
+        FullMatrix<double> m_in(16, 16), m_act(16, 16);
+        add_point_contribution(in, inactive, kit.shapes[q], kit.JxW[q], &m_in,
+                               dummy);
+        add_point_contribution(in, active, kit.shapes[q], kit.JxW[q], &m_act,
+                               dummy);
+        kit.contact_inactive.add(1., m_in);
+        kit.contact_switch[q] = m_act;
+        kit.contact_switch[q].add(-1., m_in);
+      }
+  }
+
+
+
+  double
+  KirchhoffModel::load_at(const unsigned int c, const unsigned int q) const
+  {
+    return load_is_constant ? load_constant :
+                              load_values[c * quadrature.size() + q];
+  }
+
+
+
+  double
+  KirchhoffModel::psi_at(const unsigned int c, const unsigned int q) const
+  {
+    return psi_is_constant ? psi_constant :
+                             psi_values[c * quadrature.size() + q];
+  }
+
+
+
+  PointInput
+  KirchhoffModel::point_input(const unsigned int c,
+                              const unsigned int q,
+                              const double      *u) const
+  {
+    double w = 0., op = 0.;
+    for (unsigned int i = 0; i < 16; ++i)
+      {
+        w += u[i] * kit.values(i, q);
+        op += u[i] * (formulation == Formulation::gsv ? kit.bilaplacians(i, q) :
+                                                        kit.laplacians(i, q));
+      }
+    PointInput in;
+    in.u_n = -w;
+    in.gap = -psi_at(c, q);
+    if (!kit.sigma_terms)
+      in.sigma_n = 0.;
+    else if (formulation == Formulation::gsv)
+      in.sigma_n = load_at(c, q) - D * op;
+    else
+      in.sigma_n = lambda_eps * op;
+    in.r            = kit.r;
+    in.theta        = kit.sigma_terms ? prm.theta : 0.;
+    in.lambda_scale = kit.lambda_scale;
+    return in;
+  }
+
+
+
+  void
+  KirchhoffModel::setup_cycle(const unsigned int cycle)
+  {
+    if (cycle == 0)
+      {
+        make_grid();
+        setup_dofs();
+        solution.reinit(dof_handler.n_dofs());
+      }
+    else
+      {
+        // Nested iteration. Uniform refinement of a Q3-Hermite space gives
+        // a space that contains the old one, so Hermite interpolation of
+        // the old solution at the new vertices reproduces it exactly.
+        const unsigned int     old_nx = nx, old_ny = ny;
+        const Tensor<1, 2>     old_h  = kit.h;
+        std::vector<double>    coeff(16 * cells.size());
+        for (unsigned int k = 0; k < coeff.size(); ++k)
+          coeff[k] = solution[cell_dofs[k]];
+
+        triangulation.refine_global(1);
+        nx *= 2;
+        ny *= 2;
+        setup_dofs();
+        solution.reinit(dof_handler.n_dofs());
+
+        std::vector<double>         v;
+        std::vector<Tensor<1, 2>>   g;
+        std::vector<Tensor<2, 2>>   hs;
+        const std::function<HermiteTools::VertexData(const Point<2> &)>
+          old_solution = [&](const Point<2> &p) {
+            const unsigned int ix = std::min<unsigned int>(
+              old_nx - 1,
+              static_cast<unsigned int>(std::max(0., p[0] / old_h[0])));
+            const unsigned int iy = std::min<unsigned int>(
+              old_ny - 1,
+              static_cast<unsigned int>(std::max(0., p[1] / old_h[1])));
+            const Point<2> unit((p[0] - ix * old_h[0]) / old_h[0],
+                                (p[1] - iy * old_h[1]) / old_h[1]);
+            fe.evaluate(unit, old_h, v, g, hs);
+            HermiteTools::VertexData d = {{0., 0., 0., 0.}};
+            const double *cf = &coeff[16 * (ix + old_nx * iy)];
+            for (unsigned int i = 0; i < 16; ++i)
+              {
+                d[0] += cf[i] * v[i];
+                d[1] += cf[i] * g[i][0];
+                d[2] += cf[i] * g[i][1];
+                d[3] += cf[i] * hs[i][0][1];
+              }
+            return d;
+          };
+        HermiteTools::interpolate(dof_handler, old_solution, solution);
+        constraints.distribute(solution);
+      }
+    base      = solution;
+    increment.reinit(solution.size());
+  }
+
+
+
+  std::uint64_t
+  KirchhoffModel::n_dofs() const
+  {
+    return dof_handler.n_dofs();
+  }
+
+
+
+  double
+  KirchhoffModel::mesh_size() const
+  {
+    return kit.h_K;
+  }
+
+
+
+  ContactCounts
+  KirchhoffModel::assemble(const NonlinearScheme scheme, const bool with_matrix)
+  {
+    const unsigned int nq = quadrature.size();
+    ContactCounts      counts;
+    std::uint64_t      hash = 1469598103934665603ull; // FNV-1a
+
+    rhs = 0.;
+    if (with_matrix)
+      system_matrix = 0.;
+
+    std::vector<types::global_dof_index> dofs(16);
+    Vector<double>                       cell_residual(16);
+    FullMatrix<double>                   cell_matrix(16, 16);
+    double                               u[16];
+
+    for (unsigned int c = 0; c < cells.size(); ++c)
+      {
+        for (unsigned int i = 0; i < 16; ++i)
+          {
+            dofs[i] = cell_dofs[16 * c + i];
+            u[i]    = solution[dofs[i]];
+          }
+        // Bulk residual a(U, N_i) - (f, N_i).
+        for (unsigned int i = 0; i < 16; ++i)
+          {
+            double a = 0.;
+            for (unsigned int j = 0; j < 16; ++j)
+              a += kit.bending(i, j) * u[j];
+            cell_residual(i) = a;
+          }
+        if (load_is_constant)
+          for (unsigned int i = 0; i < 16; ++i)
+            cell_residual(i) -= load_constant * kit.load_shape[i];
+        else
+          for (unsigned int q = 0; q < nq; ++q)
+            {
+              const double fq = load_at(c, q) * kit.JxW[q];
+              for (unsigned int i = 0; i < 16; ++i)
+                cell_residual(i) -= fq * kit.values(i, q);
+            }
+        if (with_matrix)
+          {
+            cell_matrix = kit.bending;
+            cell_matrix.add(1., kit.contact_inactive);
+          }
+
+        // Contact terms through the generic kernel.
+        for (unsigned int q = 0; q < nq; ++q)
+          {
+            const PointInput in = point_input(c, q, u);
+            const PointState st = evaluate_contact_point(in, scheme);
+            add_point_contribution(in, st, kit.shapes[q], kit.JxW[q], nullptr,
+                                   cell_residual);
+            const bool          active = st.status != PointStatus::inactive;
+            const unsigned char s      = active ? 1 : 0;
+            const std::size_t   k      = std::size_t(c) * nq + q;
+            if (active)
+              {
+                ++counts.n_active;
+                hash = (hash ^ k) * 1099511628211ull;
+                if (with_matrix)
+                  cell_matrix.add(1., kit.contact_switch[q]);
+              }
+            if (s != previous_status[k])
+              ++counts.n_changed;
+            if (with_matrix)
+              previous_status[k] = s;
+          }
+
+        cell_residual *= -1.; // the right-hand side is -R(U)
+        if (with_matrix)
+          constraints.distribute_local_to_global(
+            cell_matrix, cell_residual, dofs, system_matrix, rhs);
+        else
+          constraints.distribute_local_to_global(cell_residual, dofs, rhs);
+      }
+    if (with_matrix)
+      system_matrix.compress(VectorOperation::add);
+
+    counts.n_points      = cells.size() * nq;
+    counts.n_stick       = counts.n_active;
+    counts.hash          = hash;
+    counts.residual_norm = rhs.l2_norm();
+    return counts;
+  }
+
+
+
+  unsigned int
+  KirchhoffModel::solve_linear()
+  {
+    const IndexSet owned = complete_index_set(dof_handler.n_dofs());
+    TrilinosWrappers::MPI::Vector b(owned, comm), x(owned, comm);
+    double *bp = b.trilinos_vector()[0];
+    std::copy(rhs.begin(), rhs.end(), bp);
+
+    if (direct_solver == "Amesos_Mumps")
+      {
+        // MUMPS through Amesos directly (not TrilinosWrappers::SolverDirect)
+        // to request the symmetric LDL^T factorisation when the Jacobian is
+        // symmetric (theta = 1), which halves the elimination work.
+        Epetra_LinearProblem problem(
+          const_cast<Epetra_CrsMatrix *>(&system_matrix.trilinos_matrix()),
+          &x.trilinos_vector(),
+          &b.trilinos_vector());
+        Amesos_Mumps           mumps(problem);
+        Teuchos::ParameterList list;
+        list.set("MatrixProperty",
+                 jacobian_is_symmetric() ? "symmetric" : "general");
+        mumps.SetParameters(list);
+        AssertThrow(mumps.SymbolicFactorization() == 0 &&
+                      mumps.NumericFactorization() == 0 && mumps.Solve() == 0,
+                    ExcMessage("MUMPS failed to solve the linear system of "
+                               "the Kirchhoff model."));
+      }
+    else
+      {
+        SolverControl                                  control(1, 0.);
+        TrilinosWrappers::SolverDirect::AdditionalData data(false,
+                                                            direct_solver);
+        TrilinosWrappers::SolverDirect                 solver(control, data);
+        solver.solve(system_matrix, x, b);
+      }
+
+    const double *xp = x.trilinos_vector()[0];
+    std::copy(xp, xp + increment.size(), increment.begin());
+    constraints.distribute(increment);
+    base = solution;
+    return 0;
+  }
+
+
+
+  bool
+  KirchhoffModel::jacobian_is_symmetric() const
+  {
+    // theta = 1 (or no sigma_n terms): the kernel Jacobian is symmetric.
+    return !kit.sigma_terms || prm.theta == 1.;
+  }
+
+
+
+  void
+  KirchhoffModel::apply_increment(const double step)
+  {
+    solution = base;
+    solution.add(step, increment);
+  }
+
+
+
+  double
+  KirchhoffModel::energy_norm(const Vector<double> &v) const
+  {
+    double e = 0.;
+    double u[16];
+    for (unsigned int c = 0; c < cells.size(); ++c)
+      {
+        for (unsigned int i = 0; i < 16; ++i)
+          u[i] = v[cell_dofs[16 * c + i]];
+        for (unsigned int i = 0; i < 16; ++i)
+          {
+            double a = 0.;
+            for (unsigned int j = 0; j < 16; ++j)
+              a += kit.bending(i, j) * u[j];
+            e += u[i] * a;
+          }
+      }
+    return std::sqrt(std::max(e, 0.));
+  }
+
+
+
+  double
+  KirchhoffModel::increment_energy_norm() const
+  {
+    return energy_norm(increment);
+  }
+
+
+
+  double
+  KirchhoffModel::solution_energy_norm() const
+  {
+    return energy_norm(solution);
+  }
+
+
+
+  bool
+  KirchhoffModel::locate(const Point<2> &p,
+                         unsigned int   &cell_index,
+                         Point<2>       &unit) const
+  {
+    const double tol = 1e-12 * std::max(prm.length_x, prm.length_y);
+    if (!(p[0] >= -tol && p[0] <= prm.length_x + tol && p[1] >= -tol &&
+          p[1] <= prm.length_y + tol))
+      return false;
+    const unsigned int ix = std::min<unsigned int>(
+      nx - 1, static_cast<unsigned int>(std::max(0., p[0] / kit.h[0])));
+    const unsigned int iy = std::min<unsigned int>(
+      ny - 1, static_cast<unsigned int>(std::max(0., p[1] / kit.h[1])));
+    cell_index = ix + nx * iy;
+    unit = Point<2>((p[0] - ix * kit.h[0]) / kit.h[0],
+                    (p[1] - iy * kit.h[1]) / kit.h[1]);
+    return true;
+  }
+
+
+
+  std::vector<double>
+  KirchhoffModel::deflection_at(const std::vector<Point<2>> &points) const
+  {
+    std::vector<double>       w(points.size(),
+                          std::numeric_limits<double>::quiet_NaN());
+    std::vector<double>       v;
+    std::vector<Tensor<1, 2>> g;
+    std::vector<Tensor<2, 2>> hs;
+    for (unsigned int k = 0; k < points.size(); ++k)
+      {
+        unsigned int c;
+        Point<2>     unit;
+        if (!locate(points[k], c, unit))
+          continue;
+        fe.evaluate(unit, kit.h, v, g, hs);
+        double s = 0.;
+        for (unsigned int i = 0; i < 16; ++i)
+          s += solution[cell_dofs[16 * c + i]] * v[i];
+        w[k] = s;
+      }
+    return w;
+  }
+
+
+
+  CycleResults
+  KirchhoffModel::postprocess(const std::vector<Point<2>> &probes)
+  {
+    const unsigned int nq = quadrature.size();
+    CycleResults       res;
+    double             max_penetration = -std::numeric_limits<double>::max();
+    double             load_total      = 0.;
+    double             u[16];
+    for (unsigned int c = 0; c < cells.size(); ++c)
+      {
+        for (unsigned int i = 0; i < 16; ++i)
+          u[i] = solution[cell_dofs[16 * c + i]];
+        for (unsigned int q = 0; q < nq; ++q)
+          {
+            const PointInput in = point_input(c, q, u);
+            const PointState st =
+              evaluate_contact_point(in, NonlinearScheme::newton);
+            const double p = -st.lambda_n; // contact pressure p_h >= 0
+            if (p > 0.)
+              res.contact_area += kit.JxW[q];
+            res.contact_force += p * kit.JxW[q];
+            load_total += load_at(c, q) * kit.JxW[q];
+            // w - psi = -(u_n - g); penetration is psi - w > 0
+            max_penetration = std::max(max_penetration, in.u_n - in.gap);
+          }
+      }
+
+    // Extreme deflections: the nodal values (vertex dofs with j = 0).
+    res.min_deflection = std::numeric_limits<double>::max();
+    res.max_deflection = -std::numeric_limits<double>::max();
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+        {
+          const double w = solution[cell->vertex_dof_index(v, 0)];
+          res.min_deflection = std::min(res.min_deflection, w);
+          res.max_deflection = std::max(res.max_deflection, w);
+        }
+    res.probes = deflection_at(probes);
+
+    if (exact_value)
+      {
+        // Exact derivatives: user-given, or fourth-order central
+        // differences of the parsed value (FunctionParser only offers
+        // low-order differences).
+        const double delta = 1e-3 * std::max(prm.length_x, prm.length_y);
+        const auto   fd_derivatives =
+          [&](const Point<2> &x, Tensor<1, 2> &grad, Tensor<2, 2> &hess) {
+            double f[5][5];
+            for (int a = -2; a <= 2; ++a)
+              for (int b = -2; b <= 2; ++b)
+                f[a + 2][b + 2] = exact_value->value(
+                  Point<2>(x[0] + a * delta, x[1] + b * delta));
+            grad = Tensor<1, 2>();
+            hess = Tensor<2, 2>();
+            for (int a = 0; a < 5; ++a)
+              {
+                grad[0] += fd1[a] * f[a][2] / delta;
+                grad[1] += fd1[a] * f[2][a] / delta;
+                hess[0][0] += fd2[a] * f[a][2] / (delta * delta);
+                hess[1][1] += fd2[a] * f[2][a] / (delta * delta);
+                for (int b = 0; b < 5; ++b)
+                  hess[0][1] += fd1[a] * fd1[b] * f[a][b] / (delta * delta);
+              }
+            hess[1][0] = hess[0][1];
+          };
+
+        double e0 = 0., e1 = 0., e2 = 0.;
+        for (unsigned int c = 0; c < cells.size(); ++c)
+          {
+            for (unsigned int i = 0; i < 16; ++i)
+              u[i] = solution[cell_dofs[16 * c + i]];
+            const Point<2> x0 = cells[c]->vertex(0);
+            for (unsigned int q = 0; q < nq; ++q)
+              {
+                const Point<2> x(x0[0] + kit.unit_points[q][0] * kit.h[0],
+                                 x0[1] + kit.unit_points[q][1] * kit.h[1]);
+                double       wh = 0.;
+                Tensor<1, 2> gh;
+                Tensor<2, 2> hh;
+                for (unsigned int i = 0; i < 16; ++i)
+                  {
+                    wh += u[i] * kit.values(i, q);
+                    gh += u[i] * kit.gradients(i, q);
+                    hh += u[i] * kit.hessians(i, q);
+                  }
+                Tensor<1, 2> ge;
+                Tensor<2, 2> he;
+                if (!exact_gradient || !exact_hessian)
+                  fd_derivatives(x, ge, he);
+                if (exact_gradient)
+                  for (unsigned int d = 0; d < 2; ++d)
+                    ge[d] = exact_gradient->value(x, d);
+                if (exact_hessian)
+                  {
+                    he[0][0] = exact_hessian->value(x, 0);
+                    he[0][1] = he[1][0] = exact_hessian->value(x, 1);
+                    he[1][1] = exact_hessian->value(x, 2);
+                  }
+                const double ev = exact_value->value(x);
+                e0 += (wh - ev) * (wh - ev) * kit.JxW[q];
+                e1 += (gh - ge).norm_square() * kit.JxW[q];
+                e2 += (hh - he).norm_square() * kit.JxW[q];
+              }
+          }
+        res.errors.emplace_back("L2", std::sqrt(e0));
+        res.errors.emplace_back("H1", std::sqrt(e1));
+        res.errors.emplace_back("H2", std::sqrt(e2));
+      }
+
+    res.extra.emplace_back("max_penetration", max_penetration);
+    res.extra.emplace_back("load_total", load_total);
+    res.extra.emplace_back("r", kit.r);
+    res.extra.emplace_back("energy_norm", solution_energy_norm());
+    return res;
+  }
+
+
+
+  std::vector<std::pair<std::string, std::string>>
+  KirchhoffModel::write_graphical_output(const std::string &directory,
+                                         const unsigned int cycle) const
+  {
+    // Cell data: mean contact pressure p_h and the fraction of contact
+    // quadrature points in contact (p_h is a quadrature-point quantity
+    // that involves fourth derivatives, which DataOut cannot evaluate).
+    const unsigned int nq = quadrature.size();
+    Vector<float>      pressure(triangulation.n_active_cells()),
+      status(triangulation.n_active_cells()),
+      gap(triangulation.n_active_cells());
+    double u[16];
+    for (unsigned int c = 0; c < cells.size(); ++c)
+      {
+        for (unsigned int i = 0; i < 16; ++i)
+          u[i] = solution[cell_dofs[16 * c + i]];
+        double p = 0., a = 0., g = 0., area = 0.;
+        for (unsigned int q = 0; q < nq; ++q)
+          {
+            const PointInput in = point_input(c, q, u);
+            const PointState st =
+              evaluate_contact_point(in, NonlinearScheme::newton);
+            p += -st.lambda_n * kit.JxW[q];
+            a += (st.lambda_n < 0. ? 1. : 0.) * kit.JxW[q];
+            g += (in.gap - in.u_n) * kit.JxW[q];
+            area += kit.JxW[q];
+          }
+        const unsigned int k = cells[c]->active_cell_index();
+        pressure[k]          = p / area;
+        status[k]            = a / area;
+        gap[k]               = g / area;
+      }
+
+    DataOut<2> data_out;
+    data_out.attach_dof_handler(dof_handler);
+    data_out.add_data_vector(solution, "deflection");
+    data_out.add_data_vector(pressure, "contact_pressure");
+    data_out.add_data_vector(status, "contact_fraction");
+    data_out.add_data_vector(gap, "gap");
+    data_out.build_patches(mapping, 3);
+    const std::string record = data_out.write_vtu_with_pvtu_record(
+      directory + "/", "kirchhoff", cycle, comm, 2);
+    return {{"solution", record}};
+  }
+} // namespace NitscheContact
