@@ -1,5 +1,6 @@
 #include <nitsche_contact/model_factory.h>
 #include <nitsche_contact/models/elasticity.h>
+#include <nitsche_contact/models/mindlin.h>
 
 namespace NitscheContact
 {
@@ -7,12 +8,13 @@ namespace NitscheContact
   declare_model_parameters(dealii::ParameterHandler &prm)
   {
     ElasticityModel::declare_parameters(prm);
+    MindlinModel::declare_parameters(prm);
   }
 
   std::vector<std::string>
   available_models()
   {
-    return {"elasticity"};
+    return {"elasticity", "mindlin"};
   }
 
   std::unique_ptr<ContactModel>
@@ -22,11 +24,13 @@ namespace NitscheContact
   {
     if (common.model == "elasticity")
       return std::make_unique<ElasticityModel>(common, prm, comm);
-    if (common.model == "mindlin" || common.model == "kirchhoff")
+    if (common.model == "mindlin")
+      return std::make_unique<MindlinModel>(common, prm, comm);
+    if (common.model == "kirchhoff")
       throw InputError("invalid value '" + common.model +
                        "' for parameter 'Model': this model is not "
                        "available yet in this version; available models: "
-                       "elasticity");
+                       "elasticity, mindlin");
     throw InputError("invalid value '" + common.model +
                      "' for parameter 'Model': allowed are 'elasticity', "
                      "'mindlin', 'kirchhoff'");
