@@ -798,7 +798,8 @@ namespace NitscheContact
 
     double area = 0., force = 0., tangential_force = 0.;
     Tensor<1, 3> tangential_resultant;
-    double max_ratio = 0., max_slip = 0., max_membrane = 0.;
+    double max_ratio = 0., max_slip = 0., max_membrane = 0.,
+           max_contact_slip = 0.;
     unsigned long n_stick = 0, n_slip = 0;
     double        err_w_l2 = 0., err_w_h1 = 0., err_phi_l2 = 0.,
            err_phi_h1 = 0.;
@@ -837,6 +838,7 @@ namespace NitscheContact
               {
                 area += JxW;
                 force += -st.lambda_n * JxW;
+                max_contact_slip = std::max(max_contact_slip, in.slip.norm());
                 if (st.status == PointStatus::slip)
                   ++n_slip;
                 else
@@ -901,6 +903,8 @@ namespace NitscheContact
       }
     res.extra.emplace_back("nitsche_r", r);
     res.extra.emplace_back("max_bottom_inplane_displacement", max_slip);
+    res.extra.emplace_back("max_bottom_inplane_displacement_in_contact",
+                           max_contact_slip);
     res.extra.emplace_back("max_membrane_displacement", max_membrane);
     res.extra.emplace_back("stick_points", n_stick);
     res.extra.emplace_back("slip_points", n_slip);
