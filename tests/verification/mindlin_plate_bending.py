@@ -98,4 +98,51 @@ for theta in (1, -1):
     predicted = 0.00406235 / (1 - theta * c_over_D) + shear_part + discretisation
     close(w, predicted, 2e-4,
           "hard SS t/a=0.1, theta=%d: w_c = w_K D/(D - theta c) + shear" % theta)
+
+# Exact solution (hard SS, load q = -sin(pi x) sin(pi y), Marcus splitting):
+# w = -(1/(4 pi^4 D) + 1/(2 pi^2 kappa mu t)) sin sin, phi = -grad w_K with
+# w_K the Kirchhoff part. MITC4 must converge at the optimal rates:
+# L2(w), L2(phi) ~ h^2 and H1(w), H1(phi) ~ h.
+import math
+t = 0.1
+E = 12 * (1 - nu * nu) / t ** 3
+mu = E / (2 * (1 + nu))
+A = 1 / (4 * math.pi ** 4) + 1 / (2 * math.pi ** 2 * (5 / 6) * mu * t)
+B = 1 / (4 * math.pi ** 3)
+s, _ = run(args, "mindlin_exact", """
+set Model = mindlin
+subsection Geometry
+  set Length x = 1
+  set Length y = 1
+  set Thickness = %g
+  set Edge conditions = simply supported, simply supported, simply supported, simply supported
+  set Subdivisions = 4, 4
+  set Number of cycles = 4
+end
+subsection Material
+  set Young's modulus = %.17g
+end
+subsection Load
+  set Transverse load = -sin(pi*x)*sin(pi*y)
+end
+subsection Obstacle
+  set Level = -1e10
+end
+subsection Contact
+  set Nitsche theta = 0
+end
+subsection Reference solution
+  set Exact solution = -A*sin(pi*x)*sin(pi*y); B*cos(pi*x)*sin(pi*y); B*sin(pi*x)*cos(pi*y)
+  set Function constants = A=%.17g, B=%.17g
+end
+subsection Output
+  set Probe points = 0.5, 0.5
+end
+""" % (t, E, A, B))
+c = s["cycles"][-1]
+for name, rate in (("L2(w)", 2), ("H1(w)", 1), ("L2(phi)", 2), ("H1(phi)", 1)):
+    got = c["rates"][name]
+    check(abs(got - rate) < 0.1, "exact solution: rate of %s = %.3f (expected %d)"
+          % (name, got, rate))
+close(-c["probes"][0], A, 2e-3, "exact solution: centre deflection")
 finish()
