@@ -98,6 +98,10 @@ namespace NitscheContact
       {
         timer.restart();
         const ContactCounts c = model.assemble(prm.scheme, true);
+        // energy at the current iterate (NaN if the formulation has none)
+        const double j0 =
+          prm.line_search ? model.energy() :
+                            std::numeric_limits<double>::quiet_NaN();
         t.assembly += timer.wall_time();
         records.back().counts = c;
         if (solves >= prm.max_iterations)
@@ -141,29 +145,32 @@ namespace NitscheContact
         const double u        = model.solution_energy_norm();
         const double relative = (u > 0.) ? du / u : (du == 0. ? 0. : 1.);
         double       step     = 1.;
-        if (relative > prm.tolerance && damping)
+        if (relative > prm.tolerance && prm.line_search &&
+            (damping || std::isfinite(j0)))
           {
             // Backtracking. With an energy (theta = 1, frictionless) the
-            // Newton direction is a descent direction of J; otherwise
-            // Armijo on |R|. If no step down to 1/64 is accepted, take the
-            // best one tried.
-            const bool   use_energy = std::isfinite(c.energy);
-            const double m0   = use_energy ? c.energy : c.residual_norm;
+            // Newton direction is a descent direction of J: accept the
+            // first step that does not increase J. Otherwise (only once
+            // damping is on) Armijo on |R|. If no step down to 1/64 is
+            // accepted, take the best one tried.
+            const bool   use_energy = std::isfinite(j0);
+            const double m0 = use_energy ? j0 : c.residual_norm;
             double       best_step = 1., best_merit = 0.;
             for (; step >= 1. / 64.; step *= 0.5)
               {
                 model.apply_increment(step);
                 timer.restart();
                 const ContactCounts trial = model.assemble(prm.scheme, false);
+                const double m = use_energy ? model.energy() :
+                                              trial.residual_norm;
                 t.assembly += timer.wall_time();
-                const double m =
-                  use_energy ? trial.energy : trial.residual_norm;
                 if (step == 1. || m < best_merit)
                   {
                     best_step  = step;
                     best_merit = m;
                   }
-                if (use_energy ? (m < m0) : (m <= (1. - 1e-4 * step) * m0))
+                if (use_energy ? (m <= m0 + 1e-13 * std::abs(m0)) :
+                                 (m <= (1. - 1e-4 * step) * m0))
                   break;
               }
             if (step < 1. / 64.)

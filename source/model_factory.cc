@@ -1,6 +1,7 @@
 #include <nitsche_contact/model_factory.h>
 #include <nitsche_contact/models/elasticity.h>
 #include <nitsche_contact/models/kirchhoff.h>
+#include <nitsche_contact/models/mindlin.h>
 
 namespace NitscheContact
 {
@@ -8,13 +9,14 @@ namespace NitscheContact
   declare_model_parameters(dealii::ParameterHandler &prm)
   {
     ElasticityModel::declare_parameters(prm);
+    MindlinModel::declare_parameters(prm);
     KirchhoffModel::declare_parameters(prm);
   }
 
   std::vector<std::string>
   available_models()
   {
-    return {"elasticity", "kirchhoff"};
+    return {"elasticity", "mindlin", "kirchhoff"};
   }
 
   std::unique_ptr<ContactModel>
@@ -24,13 +26,10 @@ namespace NitscheContact
   {
     if (common.model == "elasticity")
       return std::make_unique<ElasticityModel>(common, prm, comm);
+    if (common.model == "mindlin")
+      return std::make_unique<MindlinModel>(common, prm, comm);
     if (common.model == "kirchhoff")
       return std::make_unique<KirchhoffModel>(common, prm, comm);
-    if (common.model == "mindlin")
-      throw InputError("invalid value '" + common.model +
-                       "' for parameter 'Model': this model is not "
-                       "available yet in this version; available models: "
-                       "elasticity, kirchhoff");
     throw InputError("invalid value '" + common.model +
                      "' for parameter 'Model': allowed are 'elasticity', "
                      "'mindlin', 'kirchhoff'");

@@ -300,7 +300,7 @@ namespace NitscheContact
         "(continuation). Thin plates pressed far onto an obstacle need a "
         "few; later cycles start from the previous cycle's solution at "
         "full load (nested iteration).");
-      prm.declare_entry("Damping after", "8", Patterns::Integer(0, 100000),
+      prm.declare_entry("Damping after", "100000", Patterns::Integer(0, 100000),
                         "With 'Line search', damped steps are also used "
                         "from this iteration on (0: always damped).");
       prm.declare_entry("Print iterations", "true", Patterns::Bool(),

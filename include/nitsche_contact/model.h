@@ -20,6 +20,7 @@
 #include <nitsche_contact/nitsche_kernel.h>
 
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -37,9 +38,6 @@ namespace NitscheContact
                                  ///< previous evaluation with a matrix
     std::uint64_t hash      = 0; ///< fingerprint of the whole status field
     double        residual_norm = 0.; ///< l2 norm of the residual vector
-    /// Value of the energy whose gradient is the residual, if the
-    /// formulation has one (theta = 1, frictionless); NaN otherwise.
-    double        energy = 0.;
   };
 
   /// Quantities the driver reports for a converged cycle.
@@ -105,6 +103,17 @@ namespace NitscheContact
     /// the last solve_linear().
     virtual void
     apply_increment(double step) = 0;
+
+    /// The potential energy J(U) whose gradient is the residual, if the
+    /// formulation has one (theta = 1 and frictionless), evaluated at the
+    /// current iterate; NaN otherwise. The driver's line search uses it as
+    /// merit function. Compute it from element integrals (not U.AU), so
+    /// that it stays accurate for badly conditioned problems.
+    virtual double
+    energy() const
+    {
+      return std::numeric_limits<double>::quiet_NaN();
+    }
 
     /// Energy norms (bulk elastic energy, no contact terms) of the last
     /// increment dU and of the current iterate U.

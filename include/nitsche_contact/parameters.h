@@ -88,7 +88,7 @@ namespace NitscheContact
     bool            allow_non_convergence  = false;
     bool            print_iterations       = true;
     unsigned int    load_steps             = 1;
-    unsigned int    damping_after          = 8;
+    unsigned int    damping_after          = 100000;
 
     // "Output"
     std::string                     output_directory = "output";

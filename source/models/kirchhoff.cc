@@ -473,8 +473,9 @@ namespace NitscheContact
   double
   KirchhoffModel::load_at(const unsigned int c, const unsigned int q) const
   {
-    return load_is_constant ? load_constant :
-                              load_values[c * quadrature.size() + q];
+    return load_factor * (load_is_constant ?
+                            load_constant :
+                            load_values[c * quadrature.size() + q]);
   }
 
 
@@ -626,7 +627,7 @@ namespace NitscheContact
           }
         if (load_is_constant)
           for (unsigned int i = 0; i < 16; ++i)
-            cell_residual(i) -= load_constant * kit.load_shape[i];
+            cell_residual(i) -= load_factor * load_constant * kit.load_shape[i];
         else
           for (unsigned int q = 0; q < nq; ++q)
             {

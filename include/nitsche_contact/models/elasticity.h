@@ -56,6 +56,8 @@ namespace NitscheContact
     void
     apply_increment(double step) override;
     double
+    energy() const override;
+    double
     increment_energy_norm() const override;
     double
     solution_energy_norm() const override;
@@ -120,6 +122,7 @@ namespace NitscheContact
 
     std::vector<unsigned char> previous_status;
     double                     load_factor = 1.;
+    double                     last_contact_energy = 0.;
   };
 } // namespace NitscheContact
 

@@ -62,6 +62,11 @@ namespace NitscheContact
     solve_linear() override;
     void
     apply_increment(double step) override;
+    void
+    set_load_factor(double factor) override
+    {
+      load_factor = factor;
+    }
     double
     increment_energy_norm() const override;
     double
@@ -163,6 +168,7 @@ namespace NitscheContact
     CellKit kit;
     bool    load_is_constant = true, psi_is_constant = true;
     double  load_constant = 0., psi_constant = 0.;
+    double  load_factor = 1.; ///< load stepping (set_load_factor)
     std::vector<double> load_values, psi_values; ///< per (cell, q)
 
     dealii::Vector<double> solution, base, increment;

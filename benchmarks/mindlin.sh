@@ -1,0 +1,37 @@
+#!/bin/bash
+# Benchmark of the Mindlin model on the paper's test (parameters/
+# paper_mindlin.prm): DoFs, nonlinear iterations and wall-clock seconds per
+# phase for each refinement cycle, in Release. Usage:
+#   benchmarks/mindlin.sh [path/to/nitsche-contact] [number of cycles]
+# The program must be built with CMAKE_BUILD_TYPE=Release.
+set -e
+here=$(cd "$(dirname "$0")/.." && pwd)
+exe=${1:-$here/build/nitsche-contact}
+cycles=${2:-7}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+sed -e "s/^\( *set Number of cycles *=\).*/\1 $cycles/" \
+    -e "s|^\( *set Directory *=\).*|\1 $work/out|" \
+    -e "s/^\( *set Format *=\).*/\1 none/" \
+    -e "s/^\( *set Print iterations *=\).*/\1 false/" \
+    "$here/parameters/paper_mindlin.prm" > "$work/bench.prm"
+start=$(date +%s.%N)
+"$exe" "$work/bench.prm" > "$work/log" || { cat "$work/log"; exit 1; }
+end=$(date +%s.%N)
+python3 - "$work/out/summary.json" "$start" "$end" <<'PY'
+import json, sys
+s = json.load(open(sys.argv[1]))
+print("Mindlin model, paper test (clamped [0,10]^2, t = 0.01, q = -0.02, obstacle -1)")
+print("%5s %9s %5s %8s %8s %8s %8s %8s %9s" % ("cycle", "dofs", "its", "setup",
+      "assembly", "solve", "postproc", "total", "force"))
+acc = 0.0
+for c in s["cycles"]:
+    t = c["wall_times"]
+    tot = t["setup"] + t["assembly"] + t["solve"] + t["postprocess"] + t["output"]
+    acc += tot
+    print("%5d %9d %5d %8.2f %8.2f %8.2f %8.2f %8.2f %9.6f" % (c["cycle"], c["n_dofs"],
+          c["nonlinear_iterations"], t["setup"], t["assembly"], t["solve"],
+          t["postprocess"], tot, c["contact_force"]))
+print("sum of phases %.1f s, wall clock of the run %.1f s"
+      % (acc, float(sys.argv[3]) - float(sys.argv[2])))
+PY

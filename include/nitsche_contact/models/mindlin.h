@@ -1,0 +1,194 @@
+// Model 2: the Reissner-Mindlin plate (locking-free MITC4 transverse shear)
+// with unilateral contact and Coulomb friction on its lower face, obtained by
+// inserting the plate kinematics
+//
+//   u_alpha(x, x3) = ubar_alpha(x) + x3 phi_alpha(x),   u_3(x, x3) = w(x)
+//
+// into the 3D Nitsche formulation (theory.md section 3, doc/mindlin.md).
+//
+// The unknowns are the deflection w, the rotations phi = (phi_x, phi_y)
+// (Kirchhoff limit phi = -grad w) and, when friction is on, the membrane
+// displacements ubar = (u_x, u_y); all are continuous Q1 on a uniform
+// Cartesian mesh of the mid-plane [0,Lx]x[0,Ly].
+#ifndef nitsche_contact_models_mindlin_h
+#define nitsche_contact_models_mindlin_h
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <nitsche_contact/model.h>
+#include <nitsche_contact/parameters.h>
+
+#include <memory>
+
+namespace NitscheContact
+{
+  /**
+   * The Reissner-Mindlin plate model.
+   *
+   * Everything the nonlinear solver needs per iteration is cell-independent
+   * on the uniform Cartesian meshes this model uses: the local bulk
+   * stiffness (bending + MITC4 shear + membrane), and the linearised contact
+   * quantities (u_n, sigma_n, u_t, sigma_t) of every local shape function at
+   * every contact quadrature point. They are computed once per cycle; an
+   * iteration then only evaluates the pointwise Nitsche kernel with the
+   * current cell values. The linear theta-terms of the kernel (which act on
+   * the whole plate, also where there is no contact) are part of a constant
+   * matrix assembled once per cycle; at active points the kernel's full
+   * contribution replaces them. This is algebraically identical to calling
+   * the kernel at every point, but lets an iteration touch the global matrix
+   * only on cells in contact.
+   *
+   * The model runs on one MPI process (direct solver on a serial mesh).
+   */
+  class MindlinModel : public ContactModel
+  {
+  public:
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    MindlinModel(const CommonParameters   &common,
+                 dealii::ParameterHandler &prm,
+                 MPI_Comm                  comm);
+
+    std::string
+    name() const override
+    {
+      return "mindlin";
+    }
+    std::vector<std::pair<std::string, std::string>>
+    description() const override;
+    void
+    setup_cycle(unsigned int cycle) override;
+    std::uint64_t
+    n_dofs() const override;
+    double
+    mesh_size() const override;
+    ContactCounts
+    assemble(NonlinearScheme scheme, bool with_matrix) override;
+    unsigned int
+    solve_linear() override;
+    void
+    apply_increment(double step) override;
+    void
+    set_load_factor(double factor) override
+    {
+      load_factor = factor;
+    }
+    double
+    increment_energy_norm() const override;
+    double
+    solution_energy_norm() const override;
+    CycleResults
+    postprocess(const std::vector<dealii::Point<2>> &probes) override;
+    std::vector<double>
+    deflection_at(const std::vector<dealii::Point<2>> &points) const override;
+    std::vector<std::pair<std::string, std::string>>
+    write_graphical_output(const std::string &directory,
+                           unsigned int       cycle) const override;
+
+    /// Component indices in the FESystem.
+    static constexpr unsigned int w_component    = 0;
+    static constexpr unsigned int phi_component  = 1; ///< phi_x; phi_y = 2
+    static constexpr unsigned int ubar_component = 3; ///< u_x; u_y = 4
+
+    /// Settings of the "Mindlin" subsection.
+    struct Settings
+    {
+      double       shear_factor = 5. / 6.;
+      bool         mitc4        = true;
+      bool         membrane     = false;
+      bool         soft_support = false;
+      bool         nitsche_length_is_thickness = true;
+      unsigned int contact_quadrature          = 4;
+      std::string  linear_solver               = "Amesos_Mumps";
+      std::string  membrane_setting            = "auto";
+    };
+
+    /// The assumed (MITC4) or plain transverse shear strain gamma = grad w +
+    /// phi of a shape function, at a point of the unit cell, on an axis-
+    /// aligned hx x hy rectangle. Public so that a unit test can check the
+    /// element directly.
+    static dealii::Tensor<1, 2>
+    shear_strain(const dealii::FiniteElement<2> &fe,
+                 unsigned int                    i,
+                 const dealii::Point<2>         &unit_point,
+                 double                          hx,
+                 double                          hy,
+                 bool                            mitc4);
+
+  private:
+    void
+    make_grid();
+    void
+    setup_dofs();
+    void
+    precompute_cell_data();
+    void
+    assemble_constant_part();
+    double
+    energy_norm(const dealii::Vector<double> &v) const;
+    /// The cell containing p (Cartesian index lookup), or end().
+    dealii::DoFHandler<2>::active_cell_iterator
+    locate(const dealii::Point<2> &p, dealii::Point<2> &unit_point) const;
+    /// Kernel input at contact point q of a cell with local values u.
+    PointInput
+    point_input(const dealii::Vector<double> &u,
+                unsigned int                  q,
+                double                        gap) const;
+
+    const CommonParameters &prm;
+    MPI_Comm                comm;
+    const Settings          settings;
+
+    double eps;    ///< half thickness
+    double lambda; ///< 3D Lame lambda (used in sigma_n)
+    double mu;     ///< shear modulus
+    double r;      ///< Nitsche parameter gamma0 E / h_n
+
+    dealii::Triangulation<2> triangulation;
+    dealii::FESystem<2>      fe;
+    dealii::DoFHandler<2>    dof_handler;
+    dealii::AffineConstraints<double> constraints;
+
+    unsigned int nx = 0, ny = 0; ///< cells per direction
+    double       hx = 0., hy = 0.;
+    /// Active cells by Cartesian index j*nx + i.
+    std::vector<dealii::DoFHandler<2>::active_cell_iterator> cell_grid;
+
+    // Cell-independent data of the current cycle.
+    dealii::QGauss<2>                            contact_quadrature;
+    std::vector<double>                          contact_JxW;
+    std::vector<std::vector<ShapeContactData>>   contact_shapes; // [q][i]
+    std::vector<std::vector<double>>             shape_values;   // [q][i]
+    std::vector<std::vector<dealii::Tensor<1, 2>>> shape_grads;  // [q][i]
+    std::vector<dealii::FullMatrix<double>>      theta_matrices; // [q]
+    dealii::FullMatrix<double>                   bulk_cell_matrix;
+    dealii::FullMatrix<double>                   constant_cell_matrix;
+    std::vector<double>                          gaps; // [cell*nq + q]
+
+    dealii::TrilinosWrappers::SparseMatrix constant_matrix;
+    dealii::TrilinosWrappers::SparseMatrix system_matrix;
+    dealii::Vector<double>                 load;      // condensed F
+    dealii::Vector<double>                 residual;  // -R(U), condensed
+    dealii::Vector<double>                 solution;  // U
+    dealii::Vector<double>                 base;      // U at last solve
+    dealii::Vector<double>                 increment; // dU
+
+    ObstacleSurface                            obstacle;
+    std::unique_ptr<dealii::FunctionParser<2>> load_function;
+    std::unique_ptr<dealii::FunctionParser<2>> exact_solution;
+
+    std::vector<unsigned char> previous_status;
+    double                     load_factor = 1.; ///< load stepping
+  };
+} // namespace NitscheContact
+
+#endif

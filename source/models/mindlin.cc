@@ -1,0 +1,979 @@
+// Model 2: Reissner-Mindlin plate (MITC4) with Nitsche contact and Coulomb
+// friction from the 3D formulation. See include/nitsche_contact/models/
+// mindlin.h for the overview and doc/mindlin.md for the formulation.
+#include <deal.II/base/utilities.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values_extractors.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/solution_transfer.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <nitsche_contact/models/mindlin.h>
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace NitscheContact
+{
+  using namespace dealii;
+
+  namespace
+  {
+    [[noreturn]] void
+    bad_value(const std::string &entry,
+              const std::string &value,
+              const std::string &allowed)
+    {
+      throw InputError("invalid value '" + value + "' for parameter '" +
+                       entry + "': " + allowed);
+    }
+
+    std::string
+    str(const double x)
+    {
+      std::ostringstream s;
+      s << x;
+      return s.str();
+    }
+
+    /// Read the "Mindlin" subsection; needs the friction coefficient for
+    /// 'Membrane unknowns = auto'.
+    MindlinModel::Settings
+    read_settings(ParameterHandler &prm, const CommonParameters &common)
+    {
+      MindlinModel::Settings s;
+      prm.enter_subsection("Mindlin");
+      s.shear_factor = prm.get_double("Shear correction factor");
+      if (!(s.shear_factor > 0.))
+        bad_value("Mindlin/Shear correction factor", str(s.shear_factor),
+                  "must be > 0 (5/6 for a homogeneous plate)");
+      s.mitc4 = prm.get("Shear treatment") == "MITC4";
+      s.membrane_setting = prm.get("Membrane unknowns");
+      if (s.membrane_setting == "auto")
+        s.membrane = common.friction > 0.;
+      else
+        s.membrane = (s.membrane_setting == "true");
+      if (!s.membrane && common.friction > 0.)
+        bad_value("Mindlin/Membrane unknowns", s.membrane_setting,
+                  "with 'Contact/Friction coefficient' > 0 the slip of the "
+                  "lower face u_t = ubar - (t/2) phi involves the membrane "
+                  "displacements; use 'auto' or 'true'");
+      s.soft_support = prm.get("Simple support") == "soft";
+      s.nitsche_length_is_thickness =
+        prm.get("Nitsche length") == "thickness";
+      s.contact_quadrature = prm.get_integer("Contact quadrature points");
+      s.linear_solver      = prm.get("Linear solver");
+      prm.leave_subsection();
+      return s;
+    }
+
+    /// FNV-1a hash of the status field (cycle detection in the driver).
+    std::uint64_t
+    hash_status(const std::vector<unsigned char> &status)
+    {
+      std::uint64_t h = 1469598103934665603ULL;
+      for (const unsigned char c : status)
+        {
+          h ^= c;
+          h *= 1099511628211ULL;
+        }
+      return h;
+    }
+  } // namespace
+
+
+
+  void
+  MindlinModel::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mindlin");
+    {
+      prm.declare_entry("Shear correction factor", "0.8333333333333334",
+                        Patterns::Double(),
+                        "kappa_s in the shear energy kappa_s mu t |gamma|^2; "
+                        "5/6 for a homogeneous plate. > 0.");
+      prm.declare_entry(
+        "Shear treatment", "MITC4", Patterns::Selection("MITC4|full"),
+        "'MITC4': Bathe-Dvorkin assumed transverse shear (tying at the edge "
+        "midpoints; locking-free). 'full': plain Q1 shear gamma = grad w + "
+        "phi with 2x2 Gauss points (locks for thin plates; for "
+        "demonstration).");
+      prm.declare_entry(
+        "Membrane unknowns", "auto", Patterns::Selection("auto|true|false"),
+        "Whether the membrane displacements (u_x, u_y) are unknowns: "
+        "'auto' = only when 'Contact/Friction coefficient' > 0 (they "
+        "decouple from bending otherwise). 'false' is not allowed with "
+        "friction.");
+      prm.declare_entry(
+        "Simple support", "hard", Patterns::Selection("hard|soft"),
+        "Meaning of 'simply supported' edges: 'hard' = w = 0 and tangential "
+        "rotation = 0; 'soft' = w = 0 only (the plate has a boundary "
+        "layer). The membrane displacements of a simply supported edge are "
+        "fixed (immovable hinge).");
+      prm.declare_entry(
+        "Nitsche length", "thickness",
+        Patterns::Selection("thickness|cell size"),
+        "h_n in r = gamma0 E / h_n: 'thickness' (default; theta = 1 is then "
+        "stable for gamma0 > 1.4, theory.md 3.3) or 'cell size' (largest "
+        "cell side; needs gamma0 > 44 for theta = 1 on the paper's mesh).");
+      prm.declare_entry("Contact quadrature points", "4",
+                        Patterns::Integer(2, 12),
+                        "Gauss points per direction and cell for the contact "
+                        "integrals (the integrand has kinks inside cells); "
+                        "4 or more recommended.");
+      prm.declare_entry("Linear solver", "Amesos_Mumps",
+                        Patterns::Selection("Amesos_Mumps|Amesos_Klu"),
+                        "Sparse direct solver of Trilinos/Amesos.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  MindlinModel::MindlinModel(const CommonParameters &common,
+                             ParameterHandler       &parameters,
+                             MPI_Comm                comm)
+    : prm(common)
+    , comm(comm)
+    , settings(read_settings(parameters, common))
+    , eps(0.5 * common.thickness)
+    , lambda(common.lambda())
+    , mu(common.mu())
+    , r(0.)
+    , fe(FE_Q<2>(1), settings.membrane ? 5 : 3)
+    , dof_handler(triangulation)
+    , contact_quadrature(settings.contact_quadrature)
+    , obstacle(common)
+  {
+    if (Utilities::MPI::n_mpi_processes(comm) > 1)
+      throw InputError(
+        "invalid value 'mindlin' for parameter 'Model' on " +
+        std::to_string(Utilities::MPI::n_mpi_processes(comm)) +
+        " MPI processes: the Mindlin model runs on one process only "
+        "(serial mesh and direct solver); run it without mpirun");
+    if (common.subdivisions[2] != 1)
+      bad_value("Geometry/Subdivisions",
+                std::to_string(common.subdivisions[0]) + ", " +
+                  std::to_string(common.subdivisions[1]) + ", " +
+                  std::to_string(common.subdivisions[2]),
+                "the Mindlin plate model has no cells through the "
+                "thickness; give 'nx, ny' (or nz = 1)");
+
+    load_function = make_parsed_function<2>(common.load_expression,
+                                            common.load_constants,
+                                            1,
+                                            "Load/Transverse load");
+    if (!common.exact_solution.empty())
+      exact_solution =
+        make_parsed_function<2>(common.exact_solution,
+                                common.exact_constants,
+                                3,
+                                "Reference solution/Exact solution");
+  }
+
+
+
+  std::vector<std::pair<std::string, std::string>>
+  MindlinModel::description() const
+  {
+    std::vector<std::pair<std::string, std::string>> d;
+    d.emplace_back("element",
+                   settings.membrane ? "Q1 (w, phi_x, phi_y, u_x, u_y)" :
+                                       "Q1 (w, phi_x, phi_y)");
+    d.emplace_back("shear treatment", settings.mitc4 ? "MITC4" : "full");
+    d.emplace_back("shear correction factor", str(settings.shear_factor));
+    d.emplace_back("membrane unknowns",
+                   settings.membrane ? "true" : "false");
+    d.emplace_back("simple support", settings.soft_support ? "soft" : "hard");
+    d.emplace_back("thickness", str(prm.thickness));
+    d.emplace_back("E", str(prm.youngs_modulus));
+    d.emplace_back("nu", str(prm.poisson_ratio));
+    d.emplace_back("edges",
+                   to_string(prm.edges[0]) + ", " + to_string(prm.edges[1]) +
+                     ", " + to_string(prm.edges[2]) + ", " +
+                     to_string(prm.edges[3]));
+    d.emplace_back("theta", str(prm.theta));
+    d.emplace_back("gamma0", str(prm.gamma0));
+    d.emplace_back("Nitsche length h_n",
+                   settings.nitsche_length_is_thickness ? "thickness" :
+                                                          "cell size");
+    d.emplace_back("friction coefficient", str(prm.friction));
+    d.emplace_back("obstacle convention",
+                   prm.obstacle_level_is_midplane ? "mid-plane" :
+                                                    "bottom face");
+    d.emplace_back("contact quadrature",
+                   std::to_string(settings.contact_quadrature) + "x" +
+                     std::to_string(settings.contact_quadrature) + " Gauss");
+    d.emplace_back("linear solver", settings.linear_solver);
+    return d;
+  }
+
+
+
+  void
+  MindlinModel::make_grid()
+  {
+    // colorize = true: boundary ids 0, 1, 2, 3 on x=0, x=Lx, y=0, y=Ly,
+    // which is the order of CommonParameters::edges.
+    GridGenerator::subdivided_hyper_rectangle(
+      triangulation,
+      {prm.subdivisions[0], prm.subdivisions[1]},
+      Point<2>(0., 0.),
+      Point<2>(prm.length_x, prm.length_y),
+      true);
+    triangulation.refine_global(prm.initial_refinement);
+  }
+
+
+
+  void
+  MindlinModel::setup_dofs()
+  {
+    dof_handler.distribute_dofs(fe);
+
+    // The mesh is uniform and Cartesian: find the cell size and index the
+    // cells by their (i, j) position. The precomputed cell data below rely
+    // on every cell being the hx x hy rectangle [v0, v0 + (hx, hy)] with the
+    // reference orientation, which is checked here.
+    const unsigned int factor = 1u << (triangulation.n_levels() - 1);
+    nx                        = prm.subdivisions[0] * factor;
+    ny                        = prm.subdivisions[1] * factor;
+    hx = prm.length_x / nx;
+    hy = prm.length_y / ny;
+    cell_grid.assign(static_cast<std::size_t>(nx) * ny, dof_handler.end());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        const Point<2> v0 = cell->vertex(0), v3 = cell->vertex(3);
+        AssertThrow(std::abs(v3[0] - v0[0] - hx) < 1e-10 * hx &&
+                      std::abs(v3[1] - v0[1] - hy) < 1e-10 * hy,
+                    ExcMessage("Mindlin model: the mesh is not the uniform "
+                               "Cartesian mesh it expects"));
+        const unsigned int i = static_cast<unsigned int>(v0[0] / hx + 0.5);
+        const unsigned int j = static_cast<unsigned int>(v0[1] / hy + 0.5);
+        cell_grid[static_cast<std::size_t>(j) * nx + i] = cell;
+      }
+
+    // Edge conditions (theory.md 3.4): clamped: everything zero; hard
+    // simple support: w and the tangential rotation zero (soft: w only),
+    // membrane fixed; symmetry: normal rotation and normal membrane
+    // displacement zero; free: natural.
+    constraints.clear();
+    const unsigned int n_comp = fe.n_components();
+    for (unsigned int e = 0; e < 4; ++e)
+      {
+        const unsigned int normal     = e / 2; // 0: x = const, 1: y = const
+        const unsigned int tangential = 1 - normal;
+        std::vector<bool>  mask(n_comp, false);
+        switch (prm.edges[e])
+          {
+            case EdgeCondition::clamped:
+              std::fill(mask.begin(), mask.end(), true);
+              break;
+            case EdgeCondition::simply_supported:
+              mask[w_component] = true;
+              if (!settings.soft_support)
+                mask[phi_component + tangential] = true;
+              if (settings.membrane)
+                mask[ubar_component] = mask[ubar_component + 1] = true;
+              break;
+            case EdgeCondition::symmetry:
+              mask[phi_component + normal] = true;
+              if (settings.membrane)
+                mask[ubar_component + normal] = true;
+              break;
+            case EdgeCondition::free:
+              break;
+          }
+        if (std::find(mask.begin(), mask.end(), true) != mask.end())
+          VectorTools::interpolate_boundary_values(
+            dof_handler,
+            static_cast<types::boundary_id>(e),
+            Functions::ZeroFunction<2>(n_comp),
+            constraints,
+            ComponentMask(mask));
+      }
+    constraints.close();
+
+    DynamicSparsityPattern dsp(dof_handler.n_dofs());
+    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+    const IndexSet owned = complete_index_set(dof_handler.n_dofs());
+    constant_matrix.reinit(owned, owned, dsp, comm);
+    system_matrix.reinit(owned, owned, dsp, comm);
+
+    load.reinit(dof_handler.n_dofs());
+    residual.reinit(dof_handler.n_dofs());
+    base.reinit(dof_handler.n_dofs());
+    increment.reinit(dof_handler.n_dofs());
+
+    r = prm.gamma0 * prm.youngs_modulus /
+        (settings.nitsche_length_is_thickness ? prm.thickness :
+                                                std::max(hx, hy));
+  }
+
+
+
+  Tensor<1, 2>
+  MindlinModel::shear_strain(const FiniteElement<2> &fe,
+                             const unsigned int      i,
+                             const Point<2>         &p,
+                             const double            hx,
+                             const double            hy,
+                             const bool              mitc4)
+  {
+    // gamma = grad w + phi. MITC4 on an axis-aligned rectangle (theory.md
+    // 3.4): gamma_x is tied at the midpoints of the edges y = y0, y0 + hy and
+    // interpolated linearly in y, gamma_y likewise in x. For Q1 functions
+    // this is gamma_h,x(x, y) = d_x w(x, y) + phi_x(x_c, y) and gamma_h,y(x,
+    // y) = d_y w(x, y) + phi_y(x, y_c) with (x_c, y_c) the cell centre (d_x w
+    // of a Q1 function depends on y only and is reproduced exactly).
+    const unsigned int c = fe.system_to_component_index(i).first;
+    Tensor<1, 2>       g;
+    if (c == w_component)
+      {
+        const Tensor<1, 2> d = fe.shape_grad(i, p);
+        g[0]                 = d[0] / hx;
+        g[1]                 = d[1] / hy;
+      }
+    else if (c == phi_component)
+      g[0] = fe.shape_value(i, mitc4 ? Point<2>(0.5, p[1]) : p);
+    else if (c == phi_component + 1)
+      g[1] = fe.shape_value(i, mitc4 ? Point<2>(p[0], 0.5) : p);
+    return g;
+  }
+
+
+
+  void
+  MindlinModel::precompute_cell_data()
+  {
+    const unsigned int n   = fe.n_dofs_per_cell();
+    const double       nu  = prm.poisson_ratio;
+    const double       E   = prm.youngs_modulus;
+    const double       t   = prm.thickness;
+    const double       D   = prm.bending_stiffness();
+    const double       S   = settings.shear_factor * mu * t;
+    const double       Dm  = E * t / (1. - nu * nu);
+    const auto comp = [&](const unsigned int i) {
+      return fe.system_to_component_index(i).first;
+    };
+    const auto grad = [&](const unsigned int i, const Point<2> &p) {
+      const Tensor<1, 2> d = fe.shape_grad(i, p);
+      Tensor<1, 2>       g;
+      g[0] = d[0] / hx;
+      g[1] = d[1] / hy;
+      return g;
+    };
+
+    // Bulk stiffness of one cell, 2x2 Gauss (exact for bending, membrane
+    // and the MITC4 shear on rectangles).
+    {
+      const QGauss<2> q2(2);
+      bulk_cell_matrix.reinit(n, n);
+      std::vector<SymmetricTensor<2, 2>> curvature(n), strain(n);
+      std::vector<Tensor<1, 2>>          gamma(n);
+      for (unsigned int q = 0; q < q2.size(); ++q)
+        {
+          const Point<2> &p   = q2.point(q);
+          const double    JxW = q2.weight(q) * hx * hy;
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              curvature[i] = strain[i] = SymmetricTensor<2, 2>();
+              const unsigned int c     = comp(i);
+              const Tensor<1, 2> g     = grad(i, p);
+              // sym grad of the vector (phi_x, phi_y) or (u_x, u_y) whose
+              // component d is the shape function: sym(e_d (x) g)
+              SymmetricTensor<2, 2> s;
+              const unsigned int    d = (c == phi_component ||
+                                      c == ubar_component) ? 0 : 1;
+              s[d][d] = g[d];
+              s[0][1] = 0.5 * g[1 - d];
+              if (c == phi_component || c == phi_component + 1)
+                curvature[i] = s;
+              else if (c != w_component)
+                strain[i] = s;
+              gamma[i] = shear_strain(fe, i, p, hx, hy, settings.mitc4);
+            }
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j < n; ++j)
+              bulk_cell_matrix(i, j) +=
+                (D * ((1. - nu) * (curvature[i] * curvature[j]) +
+                      nu * trace(curvature[i]) * trace(curvature[j])) +
+                 S * (gamma[i] * gamma[j]) +
+                 Dm * ((1. - nu) * (strain[i] * strain[j]) +
+                       nu * trace(strain[i]) * trace(strain[j]))) *
+                JxW;
+        }
+    }
+
+    // Linearised bottom-face quantities (theory.md 3.3) of every shape
+    // function at every contact point: u_n = -w, sigma_n = lambda (div ubar
+    // - eps div phi), u_t = ubar - eps phi, sigma_t = -mu gamma_h.
+    const unsigned int nq = contact_quadrature.size();
+    contact_JxW.resize(nq);
+    contact_shapes.assign(nq, std::vector<ShapeContactData>(n));
+    shape_values.assign(nq, std::vector<double>(n));
+    shape_grads.assign(nq, std::vector<Tensor<1, 2>>(n));
+    theta_matrices.assign(nq, FullMatrix<double>(n, n));
+    constant_cell_matrix = bulk_cell_matrix;
+    const double t_over_r = prm.theta / r;
+    for (unsigned int q = 0; q < nq; ++q)
+      {
+        const Point<2> &p = contact_quadrature.point(q);
+        contact_JxW[q]    = contact_quadrature.weight(q) * hx * hy;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const unsigned int c   = comp(i);
+            const double       val = fe.shape_value(i, p);
+            const Tensor<1, 2> g   = grad(i, p);
+            shape_values[q][i]     = val;
+            shape_grads[q][i]      = g;
+            ShapeContactData &s    = contact_shapes[q][i];
+            if (c == w_component)
+              s.u_n = -val;
+            else if (c == phi_component || c == phi_component + 1)
+              {
+                const unsigned int d = c - phi_component;
+                s.sigma_n            = -lambda * eps * g[d];
+                s.u_t[d]             = -eps * val;
+              }
+            else
+              {
+                const unsigned int d = c - ubar_component;
+                s.sigma_n            = lambda * g[d];
+                s.u_t[d]             = val;
+              }
+            const Tensor<1, 2> gam =
+              shear_strain(fe, i, p, hx, hy, settings.mitc4);
+            s.sigma_t[0] = -mu * gam[0];
+            s.sigma_t[1] = -mu * gam[1];
+          }
+        // The linear theta-terms that the kernel adds at every point:
+        // -(theta/r) (sigma_n(u) sigma_n(v) [+ sigma_t(u).sigma_t(v)]).
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            {
+              const ShapeContactData &si = contact_shapes[q][i],
+                                     &sj = contact_shapes[q][j];
+              double v = si.sigma_n * sj.sigma_n;
+              if (prm.friction > 0.)
+                v += si.sigma_t * sj.sigma_t;
+              theta_matrices[q](i, j) = -t_over_r * v * contact_JxW[q];
+            }
+        constant_cell_matrix.add(1., theta_matrices[q]);
+      }
+
+    // Gap g = distance from the constrained surface to the obstacle:
+    // 'bottom face': the face x3 = -eps must stay above z_obs, so u_n =
+    // -w <= g = -eps - z_obs; 'mid-plane': w >= z_obs, g = -z_obs.
+    gaps.resize(static_cast<std::size_t>(nx) * ny * nq);
+    const double shift = prm.obstacle_level_is_midplane ? 0. : eps;
+    for (unsigned int c = 0; c < cell_grid.size(); ++c)
+      {
+        const Point<2> v0 = cell_grid[c]->vertex(0);
+        for (unsigned int q = 0; q < nq; ++q)
+          {
+            const Point<2> &p = contact_quadrature.point(q);
+            const Point<2>  x(v0[0] + p[0] * hx, v0[1] + p[1] * hy);
+            gaps[static_cast<std::size_t>(c) * nq + q] =
+              -shift - obstacle.height(x);
+          }
+      }
+  }
+
+
+
+  void
+  MindlinModel::assemble_constant_part()
+  {
+    // Constant matrix: bulk stiffness + theta-terms at all contact points;
+    // load vector with 2x2 Gauss (exact for bilinear loads).
+    constant_matrix = 0.;
+    load            = 0.;
+    const unsigned int n = fe.n_dofs_per_cell();
+    std::vector<types::global_dof_index> dofs(n);
+    Vector<double>                       cell_load(n);
+    const QGauss<2>                      q2(2);
+    std::vector<std::vector<double>>     values(q2.size(),
+                                            std::vector<double>(n));
+    for (unsigned int q = 0; q < q2.size(); ++q)
+      for (unsigned int i = 0; i < n; ++i)
+        values[q][i] = fe.system_to_component_index(i).first == w_component ?
+                         fe.shape_value(i, q2.point(q)) :
+                         0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        cell_load = 0.;
+        const Point<2> v0 = cell->vertex(0);
+        for (unsigned int q = 0; q < q2.size(); ++q)
+          {
+            const Point<2> x(v0[0] + q2.point(q)[0] * hx,
+                             v0[1] + q2.point(q)[1] * hy);
+            const double   f = load_function->value(x) * q2.weight(q) * hx * hy;
+            for (unsigned int i = 0; i < n; ++i)
+              cell_load(i) += f * values[q][i];
+          }
+        constraints.distribute_local_to_global(constant_cell_matrix,
+                                               cell_load,
+                                               dofs,
+                                               constant_matrix,
+                                               load);
+      }
+    constant_matrix.compress(VectorOperation::add);
+  }
+
+
+
+  void
+  MindlinModel::setup_cycle(const unsigned int cycle)
+  {
+    if (cycle == 0)
+      {
+        make_grid();
+        setup_dofs();
+        solution.reinit(dof_handler.n_dofs());
+      }
+    else
+      {
+        // Nested iteration: carry the converged solution to the refined
+        // mesh as the initial iterate.
+        SolutionTransfer<2, Vector<double>> transfer(dof_handler);
+        triangulation.set_all_refine_flags();
+        triangulation.prepare_coarsening_and_refinement();
+        transfer.prepare_for_coarsening_and_refinement(solution);
+        triangulation.execute_coarsening_and_refinement();
+        setup_dofs();
+        Vector<double> interpolated(dof_handler.n_dofs());
+        transfer.interpolate(solution, interpolated);
+        solution = interpolated;
+        constraints.distribute(solution);
+      }
+    base = solution;
+    increment = 0.;
+    precompute_cell_data();
+    assemble_constant_part();
+    previous_status.assign(static_cast<std::size_t>(nx) * ny *
+                             contact_quadrature.size(),
+                           0);
+  }
+
+
+
+  std::uint64_t
+  MindlinModel::n_dofs() const
+  {
+    return dof_handler.n_dofs();
+  }
+
+
+
+  double
+  MindlinModel::mesh_size() const
+  {
+    return std::max(hx, hy);
+  }
+
+
+
+  PointInput
+  MindlinModel::point_input(const Vector<double> &u,
+                            const unsigned int    q,
+                            const double          gap) const
+  {
+    PointInput in;
+    for (unsigned int i = 0; i < u.size(); ++i)
+      {
+        const ShapeContactData &s = contact_shapes[q][i];
+        in.u_n += u(i) * s.u_n;
+        in.sigma_n += u(i) * s.sigma_n;
+        in.slip += u(i) * s.u_t;
+        in.sigma_t += u(i) * s.sigma_t;
+      }
+    in.gap       = gap;
+    in.normal[2] = -1.;
+    in.r         = r;
+    in.theta     = prm.theta;
+    in.friction  = prm.friction;
+    return in;
+  }
+
+
+
+  ContactCounts
+  MindlinModel::assemble(const NonlinearScheme scheme, const bool with_matrix)
+  {
+    ContactCounts counts;
+    const unsigned int n  = fe.n_dofs_per_cell();
+    const unsigned int nq = contact_quadrature.size();
+    std::vector<types::global_dof_index> dofs(n);
+    Vector<double>     u(n), cell_residual(n), tmp(n);
+    FullMatrix<double> cell_matrix(n, n);
+
+    if (with_matrix)
+      system_matrix.copy_from(constant_matrix);
+    residual = 0.;
+
+    std::vector<unsigned char> status(previous_status.size());
+    for (unsigned int c = 0; c < cell_grid.size(); ++c)
+      {
+        const auto &cell = cell_grid[c];
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < n; ++i)
+          u(i) = solution(dofs[i]);
+        // Constant part: (bulk + theta-terms) U.
+        constant_cell_matrix.vmult(cell_residual, u);
+        bool any_active = false;
+        for (unsigned int q = 0; q < nq; ++q)
+          {
+            const std::size_t k  = static_cast<std::size_t>(c) * nq + q;
+            const PointInput  in = point_input(u, q, gaps[k]);
+            const PointState  st = evaluate_contact_point(in, scheme);
+            status[k]            = static_cast<unsigned char>(st.status);
+            ++counts.n_points;
+            if (st.status == PointStatus::inactive)
+              continue;
+            ++counts.n_active;
+            if (st.status == PointStatus::slip)
+              ++counts.n_slip;
+            else
+              ++counts.n_stick;
+            if (!any_active && with_matrix)
+              cell_matrix = 0.;
+            any_active = true;
+            // Full kernel contribution instead of the theta-terms already
+            // contained in the constant part.
+            add_point_contribution(in,
+                                   st,
+                                   contact_shapes[q],
+                                   contact_JxW[q],
+                                   with_matrix ? &cell_matrix : nullptr,
+                                   cell_residual);
+            theta_matrices[q].vmult(tmp, u);
+            cell_residual -= tmp;
+            if (with_matrix)
+              cell_matrix.add(-1., theta_matrices[q]);
+          }
+        cell_residual *= -1.;
+        constraints.distribute_local_to_global(cell_residual, dofs, residual);
+        if (with_matrix && any_active)
+          constraints.distribute_local_to_global(cell_matrix,
+                                                 dofs,
+                                                 system_matrix);
+      }
+    if (with_matrix)
+      system_matrix.compress(VectorOperation::add);
+    residual.add(load_factor, load);
+
+    for (std::size_t k = 0; k < status.size(); ++k)
+      if (status[k] != previous_status[k])
+        ++counts.n_changed;
+    counts.hash          = hash_status(status);
+    counts.residual_norm = residual.l2_norm();
+    if (with_matrix)
+      previous_status.swap(status);
+    return counts;
+  }
+
+
+
+  unsigned int
+  MindlinModel::solve_linear()
+  {
+    SolverControl                                 control(1, 0.);
+    TrilinosWrappers::SolverDirect::AdditionalData data(false,
+                                                        settings.linear_solver);
+    TrilinosWrappers::SolverDirect                solver(control, data);
+    increment = 0.;
+    solver.solve(system_matrix, increment, residual);
+    constraints.distribute(increment);
+    base = solution;
+    return 0;
+  }
+
+
+
+  void
+  MindlinModel::apply_increment(const double step)
+  {
+    solution = base;
+    solution.add(step, increment);
+  }
+
+
+
+  double
+  MindlinModel::energy_norm(const Vector<double> &v) const
+  {
+    const unsigned int n = fe.n_dofs_per_cell();
+    std::vector<types::global_dof_index> dofs(n);
+    Vector<double> u(n);
+    double         sum = 0.;
+    for (const auto &cell : cell_grid)
+      {
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < n; ++i)
+          u(i) = v(dofs[i]);
+        sum += bulk_cell_matrix.matrix_norm_square(u);
+      }
+    return std::sqrt(std::max(sum, 0.));
+  }
+
+
+
+  double
+  MindlinModel::increment_energy_norm() const
+  {
+    return energy_norm(increment);
+  }
+
+
+
+  double
+  MindlinModel::solution_energy_norm() const
+  {
+    return energy_norm(solution);
+  }
+
+
+
+  DoFHandler<2>::active_cell_iterator
+  MindlinModel::locate(const Point<2> &p, Point<2> &unit_point) const
+  {
+    const double tol = 1e-12 * std::max(prm.length_x, prm.length_y);
+    if (!(p[0] >= -tol && p[0] <= prm.length_x + tol && p[1] >= -tol &&
+          p[1] <= prm.length_y + tol))
+      return dof_handler.end();
+    const unsigned int i =
+      std::min(static_cast<unsigned int>(std::max(p[0], 0.) / hx), nx - 1);
+    const unsigned int j =
+      std::min(static_cast<unsigned int>(std::max(p[1], 0.) / hy), ny - 1);
+    const auto &cell = cell_grid[static_cast<std::size_t>(j) * nx + i];
+    const Point<2> v0 = cell->vertex(0);
+    unit_point = Point<2>(std::min(std::max((p[0] - v0[0]) / hx, 0.), 1.),
+                          std::min(std::max((p[1] - v0[1]) / hy, 0.), 1.));
+    return cell;
+  }
+
+
+
+  std::vector<double>
+  MindlinModel::deflection_at(const std::vector<Point<2>> &points) const
+  {
+    std::vector<double> w(points.size(),
+                          std::numeric_limits<double>::quiet_NaN());
+    const unsigned int n = fe.n_dofs_per_cell();
+    std::vector<types::global_dof_index> dofs(n);
+    for (unsigned int k = 0; k < points.size(); ++k)
+      {
+        Point<2>   unit;
+        const auto cell = locate(points[k], unit);
+        if (cell == dof_handler.end())
+          continue;
+        cell->get_dof_indices(dofs);
+        double value = 0.;
+        for (unsigned int i = 0; i < n; ++i)
+          if (fe.system_to_component_index(i).first == w_component)
+            value += solution(dofs[i]) * fe.shape_value(i, unit);
+        w[k] = value;
+      }
+    return w;
+  }
+
+
+
+  CycleResults
+  MindlinModel::postprocess(const std::vector<Point<2>> &probes)
+  {
+    CycleResults res;
+    const unsigned int n  = fe.n_dofs_per_cell();
+    const unsigned int nq = contact_quadrature.size();
+    std::vector<types::global_dof_index> dofs(n);
+    Vector<double> u(n);
+
+    double area = 0., force = 0., tangential_force = 0.;
+    Tensor<1, 3> tangential_resultant;
+    double max_ratio = 0., max_slip = 0., max_membrane = 0.,
+           max_contact_slip = 0.;
+    unsigned long n_stick = 0, n_slip = 0;
+    double        err_w_l2 = 0., err_w_h1 = 0., err_phi_l2 = 0.,
+           err_phi_h1 = 0.;
+    Vector<double>              exact_value(3);
+    std::vector<Tensor<1, 2>>   exact_grad(3);
+
+    for (unsigned int c = 0; c < cell_grid.size(); ++c)
+      {
+        const auto &cell = cell_grid[c];
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < n; ++i)
+          u(i) = solution(dofs[i]);
+        const Point<2> v0 = cell->vertex(0);
+        for (unsigned int q = 0; q < nq; ++q)
+          {
+            const std::size_t k  = static_cast<std::size_t>(c) * nq + q;
+            const PointInput  in = point_input(u, q, gaps[k]);
+            const PointState  st =
+              evaluate_contact_point(in, NonlinearScheme::newton);
+            const double JxW = contact_JxW[q];
+            max_slip         = std::max(max_slip, in.slip.norm());
+            if (settings.membrane)
+              {
+                Tensor<1, 2> ubar;
+                for (unsigned int i = 0; i < n; ++i)
+                  {
+                    const unsigned int cc =
+                      fe.system_to_component_index(i).first;
+                    if (cc >= ubar_component)
+                      ubar[cc - ubar_component] +=
+                        u(i) * shape_values[q][i];
+                  }
+                max_membrane = std::max(max_membrane, ubar.norm());
+              }
+            if (st.lambda_n < 0.)
+              {
+                area += JxW;
+                force += -st.lambda_n * JxW;
+                max_contact_slip = std::max(max_contact_slip, in.slip.norm());
+                if (st.status == PointStatus::slip)
+                  ++n_slip;
+                else
+                  ++n_stick;
+                if (prm.friction > 0.)
+                  {
+                    tangential_force += st.lambda_t.norm() * JxW;
+                    tangential_resultant += st.lambda_t * JxW;
+                    max_ratio =
+                      std::max(max_ratio,
+                               st.lambda_t.norm() /
+                                 (prm.friction * (-st.lambda_n)));
+                  }
+              }
+            if (exact_solution)
+              {
+                const Point<2> &p = contact_quadrature.point(q);
+                const Point<2>  x(v0[0] + p[0] * hx, v0[1] + p[1] * hy);
+                exact_solution->vector_value(x, exact_value);
+                exact_solution->vector_gradient(x, exact_grad);
+                double       e[3] = {exact_value(0), exact_value(1),
+                               exact_value(2)};
+                Tensor<1, 2> eg[3] = {exact_grad[0], exact_grad[1],
+                                      exact_grad[2]};
+                for (unsigned int i = 0; i < n; ++i)
+                  {
+                    const unsigned int cc =
+                      fe.system_to_component_index(i).first;
+                    if (cc < 3)
+                      {
+                        e[cc] -= u(i) * shape_values[q][i];
+                        eg[cc] -= u(i) * shape_grads[q][i];
+                      }
+                  }
+                err_w_l2 += e[0] * e[0] * JxW;
+                err_w_h1 += eg[0].norm_square() * JxW;
+                err_phi_l2 += (e[1] * e[1] + e[2] * e[2]) * JxW;
+                err_phi_h1 +=
+                  (eg[1].norm_square() + eg[2].norm_square()) * JxW;
+              }
+          }
+      }
+
+    res.contact_area  = area;
+    res.contact_force = force;
+    res.min_deflection = std::numeric_limits<double>::max();
+    res.max_deflection = -std::numeric_limits<double>::max();
+    const IndexSet w_dofs = DoFTools::extract_dofs(
+      dof_handler, fe.component_mask(FEValuesExtractors::Scalar(w_component)));
+    for (const auto i : w_dofs)
+      {
+        res.min_deflection = std::min(res.min_deflection, solution(i));
+        res.max_deflection = std::max(res.max_deflection, solution(i));
+      }
+    res.probes = deflection_at(probes);
+    if (exact_solution)
+      {
+        res.errors.emplace_back("L2(w)", std::sqrt(err_w_l2));
+        res.errors.emplace_back("H1(w)", std::sqrt(err_w_h1));
+        res.errors.emplace_back("L2(phi)", std::sqrt(err_phi_l2));
+        res.errors.emplace_back("H1(phi)", std::sqrt(err_phi_h1));
+      }
+    res.extra.emplace_back("nitsche_r", r);
+    res.extra.emplace_back("max_bottom_inplane_displacement", max_slip);
+    res.extra.emplace_back("max_bottom_inplane_displacement_in_contact",
+                           max_contact_slip);
+    res.extra.emplace_back("max_membrane_displacement", max_membrane);
+    res.extra.emplace_back("stick_points", n_stick);
+    res.extra.emplace_back("slip_points", n_slip);
+    if (prm.friction > 0.)
+      {
+        res.extra.emplace_back("tangential_force", tangential_force);
+        res.extra.emplace_back("tangential_resultant_x",
+                               tangential_resultant[0]);
+        res.extra.emplace_back("tangential_resultant_y",
+                               tangential_resultant[1]);
+        res.extra.emplace_back("max_friction_ratio", max_ratio);
+      }
+    return res;
+  }
+
+
+
+  std::vector<std::pair<std::string, std::string>>
+  MindlinModel::write_graphical_output(const std::string &directory,
+                                       const unsigned int cycle) const
+  {
+    // Cell data: mean contact pressure -Lambda_n over the contact points of
+    // the cell, fraction of points in contact and fraction slipping.
+    const unsigned int n  = fe.n_dofs_per_cell();
+    const unsigned int nq = contact_quadrature.size();
+    Vector<float> pressure(triangulation.n_active_cells()),
+      in_contact(triangulation.n_active_cells()),
+      slipping(triangulation.n_active_cells());
+    std::vector<types::global_dof_index> dofs(n);
+    Vector<double> u(n);
+    for (unsigned int c = 0; c < cell_grid.size(); ++c)
+      {
+        const auto &cell = cell_grid[c];
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < n; ++i)
+          u(i) = solution(dofs[i]);
+        double p = 0., a = 0., s = 0., wsum = 0.;
+        for (unsigned int q = 0; q < nq; ++q)
+          {
+            const PointInput in =
+              point_input(u, q, gaps[static_cast<std::size_t>(c) * nq + q]);
+            const PointState st =
+              evaluate_contact_point(in, NonlinearScheme::newton);
+            p += -st.lambda_n * contact_JxW[q];
+            a += (st.lambda_n < 0. ? 1. : 0.) * contact_JxW[q];
+            s += (st.status == PointStatus::slip ? 1. : 0.) * contact_JxW[q];
+            wsum += contact_JxW[q];
+          }
+        const unsigned int index = cell->active_cell_index();
+        pressure(index)          = p / wsum;
+        in_contact(index)        = a / wsum;
+        slipping(index)          = s / wsum;
+      }
+
+    std::vector<std::string> names = {"w", "phi_x", "phi_y"};
+    if (settings.membrane)
+      {
+        names.emplace_back("u_x");
+        names.emplace_back("u_y");
+      }
+    DataOut<2> data_out;
+    data_out.attach_dof_handler(dof_handler);
+    data_out.add_data_vector(solution, names);
+    data_out.add_data_vector(pressure, "contact_pressure");
+    data_out.add_data_vector(in_contact, "contact_fraction");
+    data_out.add_data_vector(slipping, "slip_fraction");
+    data_out.build_patches();
+    const std::string record = data_out.write_vtu_with_pvtu_record(
+      directory + "/", "solution", cycle, comm, 2);
+    return {{"solution", record}};
+  }
+} // namespace NitscheContact

@@ -1,0 +1,84 @@
+"""Membrane unknowns and Coulomb friction of the Mindlin model on the clamped
+strip of theory.md 4.8 (paper data, theta = 0).
+
+Independent facts checked:
+- frictionless, theta = 0: the membrane displacements enter only through
+  sigma_n inside Lambda_n, and their test functions see no contact term, so
+  the membrane problem is N(ubar) = 0 with ubar = 0 on the clamped edges:
+  ubar must vanish identically and w must equal the run without membrane
+  unknowns ('Membrane unknowns = auto' drops them when F = 0);
+- F = 0.2: the Coulomb law |Lambda_t| <= F |Lambda_n| at every contact
+  quadrature point (max ratio <= 1), friction loads the membrane (ubar != 0),
+  the lower face moves in-plane in the contact zone, both stick and slip
+  occur, and the tangential resultant vanishes by the x -> L - x symmetry."""
+from common import parse_args, run, check, close, finish
+
+args = parse_args()
+
+TEMPLATE = """
+set Model = mindlin
+subsection Geometry
+  set Length x = 10
+  set Length y = 1
+  set Thickness = 0.01
+  set Edge conditions = clamped, clamped, symmetry, symmetry
+  set Subdivisions = 16, 1
+  set Number of cycles = 3
+end
+subsection Load
+  set Transverse load = -0.02
+end
+subsection Obstacle
+  set Level = -1
+end
+subsection Contact
+  set Nitsche theta = 0
+  set Friction coefficient = %(F)g
+end
+subsection Mindlin
+  set Membrane unknowns = %(membrane)s
+end
+subsection Nonlinear solver
+  set Tolerance = 1e-8
+  set Maximum iterations = 300
+end
+subsection Output
+  set Probe points = 1, 0.5; 2, 0.5; 2.5, 0.5; 5, 0.5
+end
+"""
+
+plain, _ = run(args, "mindlin_frictionless", TEMPLATE % dict(F=0, membrane="auto"))
+check(plain["parameters"]["membrane unknowns"] == "false",
+      "auto: no membrane unknowns without friction")
+memb, _ = run(args, "mindlin_frictionless_membrane",
+              TEMPLATE % dict(F=0, membrane="true"))
+cp, cm = plain["cycles"][-1], memb["cycles"][-1]
+check(cm["extra"]["max_membrane_displacement"] <= 1e-14,
+      "frictionless: membrane displacement %.3g == 0"
+      % cm["extra"]["max_membrane_displacement"])
+for k in range(3):
+    check(abs(cp["probes"][k] - cm["probes"][k]) <= 1e-10,
+          "frictionless: w(probe %d) identical with and without membrane "
+          "(%.12g, %.12g)" % (k, cp["probes"][k], cm["probes"][k]))
+
+fric, _ = run(args, "mindlin_friction", TEMPLATE % dict(F=0.2, membrane="auto"))
+cf = fric["cycles"][-1]
+ex = cf["extra"]
+check(all(c["converged"] for c in fric["cycles"]), "F=0.2: all cycles converged")
+check(ex["max_friction_ratio"] <= 1 + 1e-9,
+      "F=0.2: max |Lambda_t| / (F |Lambda_n|) = %.12g <= 1" % ex["max_friction_ratio"])
+check(ex["max_friction_ratio"] >= 1 - 1e-9,
+      "F=0.2: the friction bound is reached somewhere (sliding points)")
+check(ex["max_membrane_displacement"] > 1e-9,
+      "F=0.2: membrane displacement %.3g != 0" % ex["max_membrane_displacement"])
+check(ex["max_bottom_inplane_displacement_in_contact"] > 1e-9,
+      "F=0.2: in-plane displacement of the lower face in contact %.3g != 0"
+      % ex["max_bottom_inplane_displacement_in_contact"])
+check(ex["stick_points"] > 0 and ex["slip_points"] > 0,
+      "F=0.2: stick (%d) and slip (%d) points" % (ex["stick_points"], ex["slip_points"]))
+check(abs(ex["tangential_resultant_x"]) <= 1e-6 * ex["tangential_force"],
+      "F=0.2: tangential resultant %.3g ~ 0 (symmetry), total |Lambda_t| %.4g"
+      % (ex["tangential_resultant_x"], ex["tangential_force"]))
+# Friction on the lower face changes the deflection only slightly here.
+close(cf["probes"][1], cp["probes"][1], 1e-2, "F=0.2: w(2) close to frictionless")
+finish()
