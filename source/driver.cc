@@ -374,6 +374,23 @@ namespace NitscheContact
                                              prm.profile_start);
       }
     const std::vector<double> w = model.deflection_at(points);
+    // the 2D field (collective: before the rank check below)
+    if (cycle + 1 == prm.n_cycles && prm.field_points > 0)
+      {
+        const unsigned int n = prm.field_points;
+        std::vector<Point<2>> grid;
+        for (unsigned int j = 0; j < n; ++j)
+          for (unsigned int i = 0; i < n; ++i)
+            grid.emplace_back(prm.length_x * i / (n - 1),
+                              prm.length_y * j / (n - 1));
+        const std::vector<double> wg = model.deflection_at(grid);
+        if (Utilities::MPI::this_mpi_process(comm) != 0)
+          return;
+        std::ofstream g(prm.output_directory + "/field.csv");
+        g << "x,y,deflection\n" << std::setprecision(10);
+        for (unsigned int k = 0; k < grid.size(); ++k)
+          g << grid[k][0] << ',' << grid[k][1] << ',' << wg[k] << '\n';
+      }
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
     const double  length = prm.profile_start.distance(prm.profile_end);
