@@ -145,8 +145,46 @@ namespace NitscheContact
         const double u        = model.solution_energy_norm();
         const double relative = (u > 0.) ? du / u : (du == 0. ? 0. : 1.);
         double       step     = 1.;
+        const double slope0   = model.energy_slope(); // at U_k along dU
         if (relative > prm.tolerance && prm.line_search &&
-            (damping || std::isfinite(j0)))
+            std::isfinite(j0) && std::isfinite(slope0) && slope0 < 0.)
+          {
+            // Exact line search on the convex J: find the zero of the
+            // nondecreasing phi'(t) = R(U_k + t dU).dU in (0, 1] by a
+            // safeguarded regula falsi (Illinois). J is piecewise quadratic
+            // in t, so a few residual evaluations suffice.
+            model.apply_increment(1.);
+            timer.restart();
+            model.assemble(prm.scheme, false);
+            double s1 = model.energy_slope();
+            t.assembly += timer.wall_time();
+            if (s1 > 0.)
+              {
+                double a = 0., fa = slope0, b = 1., fb = s1;
+                for (unsigned int it = 0; it < 40; ++it)
+                  {
+                    // secant point, safeguarded by bisection when it falls
+                    // in the outer quarters of the bracket
+                    step = a - fa * (b - a) / (fb - fa);
+                    if (!(step > a + 0.25 * (b - a) && step < b - 0.25 * (b - a)))
+                      step = 0.5 * (a + b);
+                    model.apply_increment(step);
+                    timer.restart();
+                    model.assemble(prm.scheme, false);
+                    const double fs = model.energy_slope();
+                    t.assembly += timer.wall_time();
+                    if (std::abs(fs) <= 0.1 * std::abs(slope0) ||
+                        b - a <= 1e-10)
+                      break;
+                    if (fs < 0.)
+                      a = step, fa = fs;
+                    else
+                      b = step, fb = fs;
+                  }
+              }
+          }
+        else if (relative > prm.tolerance && prm.line_search &&
+                 (damping || std::isfinite(j0)))
           {
             // Backtracking. With an energy (theta = 1, frictionless) the
             // Newton direction is a descent direction of J: accept the
@@ -196,7 +234,12 @@ namespace NitscheContact
                    << step;
             pcout << line.str() << std::endl;
           }
-        if (relative <= prm.tolerance)
+        // Converged: the contact status did not change since the previous
+        // iterate and the Newton correction is negligible. (A small
+        // correction alone is not enough: at points entering contact the
+        // penalty stiffness r makes corrections small while the residual
+        // in the soft bending directions is not.)
+        if (relative <= prm.tolerance && c.n_changed == 0 && solves > 1)
           {
             converged = true;
             // status and counts at the converged iterate
@@ -331,6 +374,23 @@ namespace NitscheContact
                                              prm.profile_start);
       }
     const std::vector<double> w = model.deflection_at(points);
+    // the 2D field (collective: before the rank check below)
+    if (cycle + 1 == prm.n_cycles && prm.field_points > 0)
+      {
+        const unsigned int n = prm.field_points;
+        std::vector<Point<2>> grid;
+        for (unsigned int j = 0; j < n; ++j)
+          for (unsigned int i = 0; i < n; ++i)
+            grid.emplace_back(prm.length_x * i / (n - 1),
+                              prm.length_y * j / (n - 1));
+        const std::vector<double> wg = model.deflection_at(grid);
+        if (Utilities::MPI::this_mpi_process(comm) != 0)
+          return;
+        std::ofstream g(prm.output_directory + "/field.csv");
+        g << "x,y,deflection\n" << std::setprecision(10);
+        for (unsigned int k = 0; k < grid.size(); ++k)
+          g << grid[k][0] << ',' << grid[k][1] << ',' << wg[k] << '\n';
+      }
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
     const double  length = prm.profile_start.distance(prm.profile_end);

@@ -327,6 +327,10 @@ namespace NitscheContact
                         "which the deflection is written to profile.csv.");
       prm.declare_entry("Profile points", "101", Patterns::Integer(2, 100000),
                         "Number of points along the profile line.");
+      prm.declare_entry("Field grid points", "0", Patterns::Integer(0, 2000),
+                        "If > 0, the deflection of the last cycle is "
+                        "sampled on an n x n grid over the plate and "
+                        "written to field.csv (for plots).");
     }
     prm.leave_subsection();
 
@@ -489,6 +493,7 @@ namespace NitscheContact
       profile_start  = line[0];
       profile_end    = line[1];
       profile_points = prm.get_integer("Profile points");
+      field_points   = prm.get_integer("Field grid points");
     }
     prm.leave_subsection();
 

@@ -115,6 +115,16 @@ namespace NitscheContact
       return std::numeric_limits<double>::quiet_NaN();
     }
 
+    /// The derivative d/dt J(U_base + t dU) at the current iterate, i.e.
+    /// R(U).dU with the residual of the last assemble() and the increment
+    /// of the last solve_linear(); NaN if the model has no energy. With it
+    /// the driver performs an exact line search on the convex J.
+    virtual double
+    energy_slope() const
+    {
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+
     /// Energy norms (bulk elastic energy, no contact terms) of the last
     /// increment dU and of the current iterate U.
     virtual double

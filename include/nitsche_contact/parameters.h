@@ -97,6 +97,7 @@ namespace NitscheContact
     std::vector<dealii::Point<2>>   probes;
     dealii::Point<2>                profile_start, profile_end;
     unsigned int                    profile_points = 101;
+    unsigned int                    field_points   = 0;
 
     // "Reference solution"
     std::string exact_solution;  // components separated by ';' (empty: none)

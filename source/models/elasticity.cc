@@ -848,6 +848,15 @@ namespace NitscheContact
   }
 
   double
+  ElasticityModel::energy_slope() const
+  {
+    if (prm.theta != 1. || prm.friction > 0.)
+      return std::numeric_limits<double>::quiet_NaN();
+    // `residual` holds -R(U) on the unconstrained rows
+    return -(residual * increment);
+  }
+
+  double
   ElasticityModel::increment_energy_norm() const
   {
     return energy_norm(increment);

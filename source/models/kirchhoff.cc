@@ -609,6 +609,8 @@ namespace NitscheContact
     Vector<double>                       cell_residual(16);
     FullMatrix<double>                   cell_matrix(16, 16);
     double                               u[16];
+    double                               contact_energy = 0.;
+    const bool                           with_energy = has_energy();
 
     for (unsigned int c = 0; c < cells.size(); ++c)
       {
@@ -648,6 +650,8 @@ namespace NitscheContact
             const PointState st = evaluate_contact_point(in, scheme);
             add_point_contribution(in, st, kit.shapes[q], kit.JxW[q], nullptr,
                                    cell_residual);
+            if (with_energy)
+              contact_energy += energy_density(in, st) * kit.JxW[q];
             const bool          active = st.status != PointStatus::inactive;
             const unsigned char s      = active ? 1 : 0;
             const std::size_t   k      = std::size_t(c) * nq + q;
@@ -678,6 +682,9 @@ namespace NitscheContact
     counts.n_stick       = counts.n_active;
     counts.hash          = hash;
     counts.residual_norm = rhs.l2_norm();
+    last_contact_energy  = with_energy ?
+                             contact_energy :
+                             std::numeric_limits<double>::quiet_NaN();
     return counts;
   }
 
@@ -764,6 +771,67 @@ namespace NitscheContact
           }
       }
     return std::sqrt(std::max(e, 0.));
+  }
+
+
+
+  bool
+  KirchhoffModel::has_energy() const
+  {
+    // theta = 1 makes the kernel terms a gradient; without sigma_n terms
+    // (pure penalty) theta plays no role and the penalty is a gradient too.
+    return !kit.sigma_terms || prm.theta == 1.;
+  }
+
+
+
+  double
+  KirchhoffModel::energy_density(const PointInput &in, const PointState &st)
+  {
+    // d/dU of (1/(2r)) (c [s_n]_-^2 - sigma_n^2), c = lambda_scale, in the
+    // direction N_i is (1/r)(Lambda_n (dsigma_n - r du_n) - sigma_n dsigma_n),
+    // which is the theta = 1 kernel residual. With c = 1 this is the
+    // kernel's contact_energy_density(); written out here because the
+    // compliant obstacle has c != 1 and the pure penalty has theta = 0 in
+    // its kernel input (and sigma_n = 0).
+    const double sn_minus = negative_part(st.s_n);
+    return (st.lambda_n * sn_minus - in.sigma_n * in.sigma_n) / (2. * in.r);
+  }
+
+
+
+  double
+  KirchhoffModel::energy() const
+  {
+    if (!has_energy())
+      return std::numeric_limits<double>::quiet_NaN();
+    // 1/2 a(U,U) - (f,U) from quadrature-point values of the Hessian (no
+    // cancellation between the large entries of the bending matrix).
+    const unsigned int nq = quadrature.size();
+    const double       nu = prm.poisson_ratio;
+    double             bulk = 0., work = 0.;
+    double             u[16];
+    for (unsigned int c = 0; c < cells.size(); ++c)
+      {
+        for (unsigned int i = 0; i < 16; ++i)
+          u[i] = solution[cell_dofs[16 * c + i]];
+        for (unsigned int q = 0; q < nq; ++q)
+          {
+            Tensor<2, 2> hess;
+            double       w = 0.;
+            for (unsigned int i = 0; i < 16; ++i)
+              {
+                hess += u[i] * kit.hessians(i, q);
+                w += u[i] * kit.values(i, q);
+              }
+            const double lap = trace(hess);
+            bulk += 0.5 * D *
+                    ((1. - nu) * scalar_product(hess, hess) + nu * lap * lap) *
+                    kit.JxW[q];
+            work += load_at(c, q) * w * kit.JxW[q];
+          }
+      }
+    return bulk - work + last_contact_energy;
   }
 
 

@@ -375,10 +375,16 @@ namespace NitscheContact
     {
       const QGauss<2> q2(2);
       bulk_cell_matrix.reinit(n, n);
-      std::vector<SymmetricTensor<2, 2>> curvature(n), strain(n);
-      std::vector<Tensor<1, 2>>          gamma(n);
+      bulk_curvature.assign(q2.size(), std::vector<SymmetricTensor<2, 2>>(n));
+      bulk_membrane.assign(q2.size(), std::vector<SymmetricTensor<2, 2>>(n));
+      bulk_shear.assign(q2.size(), std::vector<Tensor<1, 2>>(n));
+      bulk_JxW.assign(q2.size(), 0.);
       for (unsigned int q = 0; q < q2.size(); ++q)
         {
+          std::vector<SymmetricTensor<2, 2>> &curvature = bulk_curvature[q],
+                                             &strain    = bulk_membrane[q];
+          std::vector<Tensor<1, 2>>          &gamma     = bulk_shear[q];
+          bulk_JxW[q] = q2.weight(q) * hx * hy;
           const Point<2> &p   = q2.point(q);
           const double    JxW = q2.weight(q) * hx * hy;
           for (unsigned int i = 0; i < n; ++i)
@@ -611,6 +617,8 @@ namespace NitscheContact
     ContactCounts counts;
     const unsigned int n  = fe.n_dofs_per_cell();
     const unsigned int nq = contact_quadrature.size();
+    const bool with_energy = prm.theta == 1. && prm.friction == 0.;
+    double     contact_energy = 0.;
     std::vector<types::global_dof_index> dofs(n);
     Vector<double>     u(n), cell_residual(n), tmp(n);
     FullMatrix<double> cell_matrix(n, n);
@@ -635,6 +643,9 @@ namespace NitscheContact
             const PointInput  in = point_input(u, q, gaps[k]);
             const PointState  st = evaluate_contact_point(in, scheme);
             status[k]            = static_cast<unsigned char>(st.status);
+            if (with_energy)
+              contact_energy +=
+                contact_energy_density(in, st) * contact_JxW[q];
             ++counts.n_points;
             if (st.status == PointStatus::inactive)
               continue;
@@ -675,6 +686,9 @@ namespace NitscheContact
         ++counts.n_changed;
     counts.hash          = hash_status(status);
     counts.residual_norm = residual.l2_norm();
+    last_contact_energy  = with_energy ?
+                             contact_energy :
+                             std::numeric_limits<double>::quiet_NaN();
     if (with_matrix)
       previous_status.swap(status);
     return counts;
@@ -722,6 +736,53 @@ namespace NitscheContact
         sum += bulk_cell_matrix.matrix_norm_square(u);
       }
     return std::sqrt(std::max(sum, 0.));
+  }
+
+
+
+  double
+  MindlinModel::energy() const
+  {
+    if (prm.theta != 1. || prm.friction > 0.)
+      return std::numeric_limits<double>::quiet_NaN();
+    // 1/2 a(U,U) from the strains at the Gauss points (no cancellation
+    // between the large shear entries of the stiffness matrix, whose
+    // contribution is small for a thin plate), minus the load work, plus
+    // the contact energy of the last assemble() (theta = 1 kernel terms,
+    // including -(1/(2r)) sigma_n^2 at inactive points).
+    const unsigned int n  = fe.n_dofs_per_cell();
+    const double       nu = prm.poisson_ratio, E = prm.youngs_modulus,
+                 t = prm.thickness;
+    const double D  = prm.bending_stiffness();
+    const double S  = settings.shear_factor * mu * t;
+    const double Dm = E * t / (1. - nu * nu);
+    std::vector<types::global_dof_index> dofs(n);
+    std::vector<double>                  u(n);
+    double                               bulk = 0.;
+    for (const auto &cell : cell_grid)
+      {
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < n; ++i)
+          u[i] = solution(dofs[i]);
+        for (unsigned int q = 0; q < bulk_JxW.size(); ++q)
+          {
+            SymmetricTensor<2, 2> k, e;
+            Tensor<1, 2>          g;
+            for (unsigned int i = 0; i < n; ++i)
+              if (u[i] != 0.)
+                {
+                  k += u[i] * bulk_curvature[q][i];
+                  e += u[i] * bulk_membrane[q][i];
+                  g += u[i] * bulk_shear[q][i];
+                }
+            bulk += 0.5 *
+                    (D * ((1. - nu) * (k * k) + nu * trace(k) * trace(k)) +
+                     S * (g * g) +
+                     Dm * ((1. - nu) * (e * e) + nu * trace(e) * trace(e))) *
+                    bulk_JxW[q];
+          }
+      }
+    return bulk - load_factor * (load * solution) + last_contact_energy;
   }
 
 

@@ -68,6 +68,8 @@ namespace NitscheContact
       load_factor = factor;
     }
     double
+    energy() const override;
+    double
     increment_energy_norm() const override;
     double
     solution_energy_norm() const override;
@@ -78,6 +80,33 @@ namespace NitscheContact
     std::vector<std::pair<std::string, std::string>>
     write_graphical_output(const std::string &directory,
                            unsigned int       cycle) const override;
+
+    /// For tests (finite-difference checks of the Jacobian and of the
+    /// energy): the current iterate U (may be modified; constrained
+    /// entries must stay zero), -R(U) of the last assemble() (zero on
+    /// constrained rows), and y = K x with the matrix of the last
+    /// assemble(scheme, true).
+    dealii::Vector<double> &
+    iterate()
+    {
+      return solution;
+    }
+    const dealii::Vector<double> &
+    negative_residual() const
+    {
+      return rhs;
+    }
+    void
+    jacobian_vmult(dealii::Vector<double> &y,
+                   const dealii::Vector<double> &x) const
+    {
+      system_matrix.vmult(y, x);
+    }
+    const dealii::AffineConstraints<double> &
+    get_constraints() const
+    {
+      return constraints;
+    }
 
     enum class Formulation
     {
@@ -125,6 +154,13 @@ namespace NitscheContact
     point_input(unsigned int c, unsigned int q, const double *u_local) const;
     double
     energy_norm(const dealii::Vector<double> &v) const;
+    /// Whether the formulation is the gradient of an energy (theta = 1, or
+    /// the pure penalty).
+    bool
+    has_energy() const;
+    /// Contact energy density at a point (see energy()).
+    static double
+    energy_density(const PointInput &in, const PointState &st);
     bool
     jacobian_is_symmetric() const;
     /// Locate the cell containing p and the unit point; false if outside.
@@ -175,6 +211,8 @@ namespace NitscheContact
     dealii::TrilinosWrappers::SparseMatrix system_matrix;
     dealii::Vector<double>                 rhs; ///< -R(U), condensed
     std::vector<unsigned char>             previous_status;
+    /// Contact part of energy() at the iterate of the last assemble().
+    double last_contact_energy = 0.;
 
     std::unique_ptr<dealii::FunctionParser<2>> load_function;
     ObstacleSurface                            obstacle;

@@ -15,6 +15,7 @@
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/grid/tria.h>
@@ -83,6 +84,8 @@ namespace NitscheContact
       load_factor = factor;
     }
     double
+    energy() const override;
+    double
     increment_energy_norm() const override;
     double
     solution_energy_norm() const override;
@@ -93,6 +96,33 @@ namespace NitscheContact
     std::vector<std::pair<std::string, std::string>>
     write_graphical_output(const std::string &directory,
                            unsigned int       cycle) const override;
+
+    /// For tests (finite-difference checks of the Jacobian and of the
+    /// energy): the current iterate U (may be modified; constrained
+    /// entries must stay zero), -R(U) of the last assemble() (zero on
+    /// constrained rows), and y = K x with the matrix of the last
+    /// assemble(scheme, true).
+    dealii::Vector<double> &
+    iterate()
+    {
+      return solution;
+    }
+    const dealii::Vector<double> &
+    negative_residual() const
+    {
+      return residual;
+    }
+    void
+    jacobian_vmult(dealii::Vector<double> &y,
+                   const dealii::Vector<double> &x) const
+    {
+      system_matrix.vmult(y, x);
+    }
+    const dealii::AffineConstraints<double> &
+    get_constraints() const
+    {
+      return constraints;
+    }
 
     /// Component indices in the FESystem.
     static constexpr unsigned int w_component    = 0;
@@ -171,6 +201,12 @@ namespace NitscheContact
     std::vector<std::vector<dealii::Tensor<1, 2>>> shape_grads;  // [q][i]
     std::vector<dealii::FullMatrix<double>>      theta_matrices; // [q]
     dealii::FullMatrix<double>                   bulk_cell_matrix;
+    /// Strains of every shape function at the 2x2 Gauss points of the bulk
+    /// form: curvature k, MITC4 shear gamma_h, membrane strain e ([q][i]).
+    std::vector<std::vector<dealii::SymmetricTensor<2, 2>>> bulk_curvature,
+      bulk_membrane;
+    std::vector<std::vector<dealii::Tensor<1, 2>>> bulk_shear;
+    std::vector<double>                            bulk_JxW;
     dealii::FullMatrix<double>                   constant_cell_matrix;
     std::vector<double>                          gaps; // [cell*nq + q]
 
@@ -187,6 +223,8 @@ namespace NitscheContact
     std::unique_ptr<dealii::FunctionParser<2>> exact_solution;
 
     std::vector<unsigned char> previous_status;
+    /// Contact part of energy() at the iterate of the last assemble().
+    double last_contact_energy = 0.;
     double                     load_factor = 1.; ///< load stepping
   };
 } // namespace NitscheContact

@@ -1,0 +1,158 @@
+#!/usr/bin/env python3
+"""The main job: the paper's test (Fabre, Pozzolini, Renard 2019, section 4)
+solved with every model and contact formulation, then one comparison table
+and the figures.
+
+  python3 parameters/compare_models.py [--exe build/nitsche-contact]
+                                       [--out results/comparison] [--quick]
+
+Runs parameters/{paper_3d, paper_mindlin, paper_kirchhoff,
+kirchhoff_nitsche}.prm with a common output block (same probes, profile line
+and field grid), reads each summary.json, profile.csv and field.csv, and
+writes into --out:
+  comparison.md, comparison.csv   probe deflections, contact area, total
+                                  reaction, min/max deflection, DoFs,
+                                  iterations, wall time (last cycle)
+  profiles.png                    centre-line deflection of all models
+  fields.png                      each model's deflection field with the
+                                  region where the plate lies on the
+                                  obstacle (paper's Figures 1-3)
+--quick uses one coarse cycle per model (for tests).
+"""
+import argparse
+import csv
+import json
+import os
+import subprocess
+import sys
+import time
+
+RUNS = [
+    ("elasticity", "3D elasticity, Q2, Nitsche", "paper_3d.prm"),
+    ("mindlin", "Mindlin-Reissner, MITC4, Nitsche", "paper_mindlin.prm"),
+    ("kirchhoff_gsv", "Kirchhoff-Love, BFS, GSV", "paper_kirchhoff.prm"),
+    ("kirchhoff_nitsche", "Kirchhoff-Love, BFS, Nitsche", "kirchhoff_nitsche.prm"),
+]
+PROBES = [(5.0, 5.0), (2.5, 5.0), (1.0, 5.0), (2.5, 2.5)]
+OBSTACLE = -1.0
+
+
+def main():
+    here = os.path.dirname(os.path.abspath(__file__))
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--exe", default=os.path.join(here, "..", "build", "nitsche-contact"))
+    ap.add_argument("--out", default="results/comparison")
+    ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--np", type=int, default=1, help="MPI ranks for the 3D model")
+    args = ap.parse_args()
+    os.makedirs(args.out, exist_ok=True)
+
+    rows = []
+    for key, label, prm in RUNS:
+        text = open(os.path.join(here, prm)).read()
+        outdir = os.path.abspath(os.path.join(args.out, key))
+        text += "\nsubsection Output\n  set Directory = %s\n" % outdir
+        text += "  set Probe points = %s\n" % "; ".join("%g, %g" % p for p in PROBES)
+        text += "  set Profile line = 0, 5; 10, 5\n  set Profile points = 201\n"
+        text += "  set Field grid points = 81\n  set Print timings = true\nend\n"
+        if args.quick:
+            text += "subsection Geometry\n  set Number of cycles = 1\nend\n"
+        prm_out = os.path.join(args.out, key + ".prm")
+        with open(prm_out, "w") as f:
+            f.write(text)
+        cmd = [args.exe, prm_out]
+        if key == "elasticity" and args.np > 1:
+            cmd = ["mpirun", "-np", str(args.np)] + cmd
+        print("== %s: %s" % (label, " ".join(cmd)), flush=True)
+        t0 = time.time()
+        with open(os.path.join(args.out, key + ".log"), "w") as log:
+            proc = subprocess.run(cmd, stdout=log, stderr=subprocess.STDOUT)
+        seconds = time.time() - t0
+        if proc.returncode != 0:
+            print("   FAILED (exit status %d), see %s.log" % (proc.returncode,
+                                                            os.path.join(args.out, key)))
+            continue
+        s = json.load(open(os.path.join(outdir, "summary.json")))
+        last = s["cycles"][-1]
+        rows.append(dict(key=key, model=label, dofs=last["n_dofs"],
+                         iterations=sum(c["nonlinear_iterations"] for c in s["cycles"]),
+                         last_iterations=last["nonlinear_iterations"],
+                         area=last["contact_area"], force=last["contact_force"],
+                         wmin=last["min_deflection"], wmax=last["max_deflection"],
+                         probes=last["probes"], seconds=seconds, outdir=outdir))
+        print("   %d DoFs, w(5,5) = %.6g, contact area %.4g, reaction %.4g, %.1f s"
+              % (last["n_dofs"], last["probes"][0], last["contact_area"],
+                 last["contact_force"], seconds), flush=True)
+
+    write_table(rows, args.out)
+    try:
+        plot(rows, args.out)
+    except ImportError:
+        print("matplotlib not available: no figures")
+    return 0 if len(rows) == len(RUNS) else 1
+
+
+def write_table(rows, out):
+    head = (["model", "DoFs", "its (all cycles)", "its (last)"]
+            + ["w(%g,%g)" % p for p in PROBES]
+            + ["contact area", "reaction", "min w", "max w", "time [s]"])
+    with open(os.path.join(out, "comparison.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(head)
+        for r in rows:
+            w.writerow([r["model"], r["dofs"], r["iterations"], r["last_iterations"]]
+                       + ["%.6g" % v for v in r["probes"]]
+                       + ["%.6g" % r["area"], "%.6g" % r["force"], "%.6g" % r["wmin"],
+                          "%.6g" % r["wmax"], "%.1f" % r["seconds"]])
+    with open(os.path.join(out, "comparison.md"), "w") as f:
+        f.write("| " + " | ".join(head) + " |\n")
+        f.write("|" + "---|" * len(head) + "\n")
+        for r in rows:
+            cells = ([r["model"], str(r["dofs"]), str(r["iterations"]), str(r["last_iterations"])]
+                     + ["%.5f" % v for v in r["probes"]]
+                     + ["%.4f" % r["area"], "%.5f" % r["force"], "%.5f" % r["wmin"],
+                        "%.3g" % r["wmax"], "%.1f" % r["seconds"]])
+            f.write("| " + " | ".join(cells) + " |\n")
+    print(open(os.path.join(out, "comparison.md")).read())
+
+
+def plot(rows, out):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(7, 4))
+    for r in rows:
+        data = list(csv.DictReader(open(os.path.join(r["outdir"], "profile.csv"))))
+        ax.plot([float(d["x"]) for d in data], [float(d["deflection"]) for d in data],
+                label=r["model"])
+    ax.axhline(OBSTACLE, color="k", lw=0.8, ls="--", label="obstacle x3 = -1")
+    ax.set_xlabel("x (y = 5)")
+    ax.set_ylabel("deflection of the mid-plane")
+    ax.set_title("Paper test: centre-line deflection")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "profiles.png"), dpi=130)
+
+    n = len(rows)
+    fig, axes = plt.subplots(1, n, figsize=(4 * n, 3.8), squeeze=False)
+    for ax, r in zip(axes[0], rows):
+        data = list(csv.DictReader(open(os.path.join(r["outdir"], "field.csv"))))
+        m = int(round(len(data) ** 0.5))
+        X = [[float(data[j * m + i]["x"]) for i in range(m)] for j in range(m)]
+        Y = [[float(data[j * m + i]["y"]) for i in range(m)] for j in range(m)]
+        W = [[float(data[j * m + i]["deflection"]) for i in range(m)] for j in range(m)]
+        cs = ax.contourf(X, Y, W, levels=20, cmap="viridis")
+        # plate on the obstacle: mid-plane within 1e-3 of its lowest level
+        lowest = OBSTACLE + 0.005
+        ax.contour(X, Y, W, levels=[lowest + 1e-3], colors="r", linewidths=1.2)
+        ax.set_title(r["model"], fontsize=9)
+        ax.set_aspect("equal")
+        fig.colorbar(cs, ax=ax, shrink=0.8)
+    fig.suptitle("Deflection; red: boundary of the region within 1e-3 of the obstacle")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "fields.png"), dpi=110)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

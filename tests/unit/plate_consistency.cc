@@ -1,0 +1,225 @@
+// Finite-difference consistency checks of the two plate models on small
+// meshes, at an iterate with contact (after a few full Newton steps from
+// U = 0), for every contact formulation and Nitsche variant:
+//  1. the generalized Jacobian K of assemble(newton, true) against central
+//     differences of the residual, K d = (R(U + e d) - R(U - e d)) / (2e),
+//     for random directions d (relative error <= 1e-6; the residual is
+//     piecewise smooth and a random U has no point exactly on a kink);
+//     this includes the Coulomb friction of the Mindlin model (stick and
+//     slip points, theta = 1, 0, -1);
+//  2. where energy() is defined (theta = 1 frictionless, and the pure
+//     penalty), dJ/dt along d equals R.d: (J(U + s d) - J(U - s d)) / (2s)
+//     against R(U).d (relative 1e-6), for d random and d = the Newton
+//     increment; elsewhere energy() must be NaN.
+// The numbers are computed from the program's own residual, so the check is
+// independent of any reference solution: it tests that K and J are the
+// derivative and the potential of R.
+#include <deal.II/base/logstream.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <nitsche_contact/model_factory.h>
+#include <nitsche_contact/models/kirchhoff.h>
+#include <nitsche_contact/models/mindlin.h>
+#include <nitsche_contact/parameters.h>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <random>
+#include <string>
+
+using namespace dealii;
+using namespace NitscheContact;
+
+namespace
+{
+  std::ofstream out("output");
+
+  // Paper-like data on a small clamped square; the obstacle is close
+  // enough that a contact zone with stick and slip points forms.
+  std::string
+  prm_text(const std::string &model,
+           const double       theta,
+           const double       friction,
+           const std::string &extra)
+  {
+    return "set Model = " + model +
+           "\n"
+           "subsection Geometry\n"
+           "  set Length x = 10\n  set Length y = 10\n"
+           "  set Thickness = 0.01\n"
+           "  set Edge conditions = clamped, clamped, clamped, clamped\n"
+           "  set Subdivisions = 6, 6\nend\n"
+           "subsection Load\n  set Transverse load = -0.02*(1+0.3*x/10)\nend\n"
+           "subsection Obstacle\n  set Level = -1\nend\n"
+           "subsection Contact\n  set Nitsche theta = " +
+           std::to_string(int(theta)) +
+           "\n  set Friction coefficient = " + std::to_string(friction) +
+           "\nend\n"
+           "subsection Output\n  set Format = none\n"
+           "  set Directory = output-dir\nend\n" +
+           extra;
+  }
+
+  template <class Model>
+  void
+  random_direction(Model &model, Vector<double> &d, std::mt19937 &gen)
+  {
+    std::uniform_real_distribution<double> dist(-1., 1.);
+    d.reinit(model.iterate().size());
+    for (auto &x : d)
+      x = dist(gen);
+    model.get_constraints().distribute(d);
+    for (const auto &line : model.get_constraints().get_lines())
+      d(line.index) = 0.;
+  }
+
+  template <class Model>
+  void
+  check_model(const std::string &name,
+              const std::string &text,
+              const unsigned int n_steps = 3)
+  {
+    ParameterHandler prm;
+    CommonParameters::declare(prm);
+    declare_model_parameters(prm);
+    prm.parse_input_from_string(text);
+    CommonParameters common;
+    common.parse(prm);
+    auto   base_model = create_model(common, prm, MPI_COMM_WORLD);
+    Model &model      = dynamic_cast<Model &>(*base_model);
+    model.setup_cycle(0);
+
+    // a few full Newton steps: an iterate with contact
+    ContactCounts c;
+    for (unsigned int k = 0; k < n_steps; ++k)
+      {
+        c = model.assemble(NonlinearScheme::newton, true);
+        model.solve_linear();
+        model.apply_increment(1.);
+      }
+    const Vector<double> U0 = model.iterate();
+    c                       = model.assemble(NonlinearScheme::newton, true);
+    const Vector<double> mR0 = model.negative_residual();
+    const double         J0  = model.energy();
+
+    std::mt19937 gen(7);
+    double       jac_err = 0.;
+    for (unsigned int k = 0; k < 3; ++k)
+      {
+        Vector<double> d, Kd(U0.size()), fd(U0.size());
+        random_direction(model, d, gen);
+        model.jacobian_vmult(Kd, d);
+        for (const auto &line : model.get_constraints().get_lines())
+          Kd(line.index) = 0.;
+        const double e = 1e-6 * U0.linfty_norm() / d.linfty_norm();
+        model.iterate() = U0;
+        model.iterate().add(e, d);
+        model.assemble(NonlinearScheme::newton, false);
+        fd = model.negative_residual();
+        model.iterate() = U0;
+        model.iterate().add(-e, d);
+        model.assemble(NonlinearScheme::newton, false);
+        fd.add(-1., model.negative_residual());
+        fd *= -1. / (2. * e); // residual R = -(negative residual)
+        fd.add(-1., Kd);
+        jac_err = std::max(jac_err, fd.l2_norm() / Kd.l2_norm());
+      }
+    out << name << ": " << c.n_active << " of " << c.n_points
+            << " contact points active";
+    if (c.n_slip > 0 || c.n_stick > 0)
+      out << " (stick " << (c.n_stick > 0 ? "> 0" : "0") << ", slip "
+              << (c.n_slip > 0 ? "> 0" : "0") << ")";
+    out << std::endl;
+    out << name << ": Jacobian vs central differences of R: "
+            << (jac_err <= 1e-6 ? "ok" : "FAILED") << std::endl;
+    if (jac_err > 1e-6)
+      out << "  relative error " << jac_err << std::endl;
+
+    if (!std::isfinite(J0))
+      {
+        out << name << ": energy() is NaN (no potential)" << std::endl;
+        return;
+      }
+    // directions: two random ones and the Newton increment
+    model.iterate() = U0;
+    model.assemble(NonlinearScheme::newton, true);
+    model.solve_linear();
+    model.apply_increment(1.);
+    Vector<double> newton = model.iterate();
+    newton.add(-1., U0);
+    double en_err = 0.;
+    for (unsigned int k = 0; k < 3; ++k)
+      {
+        Vector<double> d;
+        if (k < 2)
+          random_direction(model, d, gen);
+        else
+          d = newton;
+        // best of three steps: central differences are exact for the
+        // piecewise quadratic J unless a point changes status within
+        // [-s, s] (large s) or round-off dominates (small s)
+        const double Rd   = -(mR0 * d);
+        double       best = std::numeric_limits<double>::max();
+        for (const double rel : {1e-3, 1e-4, 1e-5, 1e-6})
+          {
+            const double s = rel * U0.linfty_norm() / d.linfty_norm();
+            double       Jpm[2];
+            for (unsigned int side = 0; side < 2; ++side)
+              {
+                model.iterate() = U0;
+                model.iterate().add(side == 0 ? s : -s, d);
+                model.assemble(NonlinearScheme::newton, false);
+                Jpm[side] = model.energy();
+              }
+            const double dJ = (Jpm[0] - Jpm[1]) / (2. * s);
+            best = std::min(best, std::abs(dJ - Rd) / std::abs(Rd));
+          }
+        en_err = std::max(en_err, best);
+      }
+    out << name << ": dJ/dt vs R.d: " << (en_err <= 1e-6 ? "ok" : "FAILED")
+            << std::endl;
+    if (en_err > 1e-6)
+      out << "  relative error " << en_err << std::endl;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  // (deallog stays silent: the direct solvers log to it)
+  deallog.depth_console(0);
+
+  const std::string gsv = "subsection Kirchhoff\n  set Contact formulation = "
+                          "gsv\n  set Stabilisation alpha = 1e-4\n";
+  for (const double theta : {1., 0., -1.})
+    check_model<KirchhoffModel>("kirchhoff gsv theta=" +
+                                  std::to_string(int(theta)),
+                                prm_text("kirchhoff", theta, 0., gsv + "end\n"));
+  check_model<KirchhoffModel>(
+    "kirchhoff gsv kappa=1e-2 theta=1",
+    prm_text("kirchhoff", 1., 0.,
+             gsv + "  set Obstacle compliance kappa = 1e-2\nend\n"));
+  check_model<KirchhoffModel>(
+    "kirchhoff penalty kappa=1e-3",
+    prm_text("kirchhoff", 0., 0.,
+             "subsection Kirchhoff\n  set Stabilisation alpha = 0\n"
+             "  set Obstacle compliance kappa = 1e-3\nend\n"));
+  for (const double theta : {1., 0., -1.})
+    check_model<KirchhoffModel>(
+      "kirchhoff nitsche theta=" + std::to_string(int(theta)),
+      prm_text("kirchhoff", theta, 0.,
+               "subsection Kirchhoff\n  set Contact formulation = nitsche\n"
+               "end\n"));
+  for (const double theta : {1., 0., -1.})
+    check_model<MindlinModel>("mindlin theta=" + std::to_string(int(theta)),
+                              prm_text("mindlin", theta, 0., ""));
+  for (const double theta : {1., 0., -1.})
+    check_model<MindlinModel>("mindlin friction 0.2 theta=" +
+                                std::to_string(int(theta)),
+                              prm_text("mindlin", theta, 0.2, ""),
+                              12);
+  return 0;
+}
