@@ -13,9 +13,34 @@
 #include <sstream>
 #include <fstream>
 #include <iostream>
+#include <cstdlib>
+#include <string>
+#include <vector>
 
 namespace
 {
+  /// The subsection path ("A/B") open at line `line` (1-based) of a .prm
+  /// file, for error messages: deal.II only says "the current subsection".
+  std::string
+  subsection_at_line(const std::string &file, const int line)
+  {
+    std::ifstream            in(file);
+    std::vector<std::string> stack;
+    std::string              text;
+    for (int n = 1; n < line && std::getline(in, text); ++n)
+      {
+        text = dealii::Utilities::trim(text.substr(0, text.find('#')));
+        if (text.rfind("subsection ", 0) == 0)
+          stack.push_back(dealii::Utilities::trim(text.substr(11)));
+        else if (text == "end" && !stack.empty())
+          stack.pop_back();
+      }
+    std::string path;
+    for (const auto &s : stack)
+      path += (path.empty() ? "" : "/") + s;
+    return path;
+  }
+
   void
   print_usage(std::ostream &out)
   {
@@ -112,9 +137,21 @@ main(int argc, char *argv[])
           std::string text = msg.str();
           while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
             text.pop_back();
+          // Name the subsection of the offending line, and where to look.
+          std::string where;
+          const auto  pos = text.find("Line <");
+          if (pos != std::string::npos)
+            {
+              const int         line = std::atoi(text.c_str() + pos + 6);
+              const std::string sub  = subsection_at_line(file, line);
+              where = "\n    (in subsection '" +
+                      (sub.empty() ? std::string("top level") : sub) +
+                      "'; 'nitsche-contact --print-parameters' lists every "
+                      "entry with its allowed values)";
+            }
           throw InputError("cannot read '" + file + "':" +
                            (text.find('\n') != std::string::npos ? "\n" : " ") +
-                           text);
+                           text + where);
         }
 
       CommonParameters common;

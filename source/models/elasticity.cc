@@ -770,6 +770,24 @@ namespace NitscheContact
         gmres.solve(system_matrix, increment, residual, amg);
         its = control.last_step();
       }
+    // A (numerically) singular Jacobian, e.g. when every contact point
+    // slides so that a rigid tangential motion is unrestrained, makes the
+    // direct solver return a meaningless (often zero) increment without an
+    // error; the driver would then see |dU| = 0 and report convergence.
+    // Check the linear residual and stop instead.
+    {
+      TrilinosWrappers::MPI::Vector check(locally_owned, comm);
+      system_matrix.vmult(check, increment);
+      check -= residual;
+      const double rhs = residual.l2_norm(), res = check.l2_norm();
+      if (!std::isfinite(res) || res > 1e-3 * rhs)
+        throw ConvergenceFailure(
+          "the linearised contact problem is singular (relative linear "
+          "residual " + std::to_string(rhs > 0. ? res / rhs : res) +
+          "): a rigid motion is not restrained, e.g. the whole contact "
+          "surface slides because the tangential load exceeds the "
+          "friction limit, or the body is not supported");
+    }
     constraints.distribute(increment);
     return its;
   }
@@ -890,6 +908,26 @@ namespace NitscheContact
   ElasticityModel::postprocess(const std::vector<Point<2>> &probes)
   {
     CycleResults res;
+    // Equilibrium check of the accepted iterate. The driver stops on the
+    // bulk energy norm of the correction, which does not see rigid motions:
+    // when a rigid motion is restrained only by contact (e.g. a block whose
+    // tangential load exceeds the friction limit) a meaningless rigid
+    // increment can pass that test. `residual` holds R(U) of the driver's
+    // final assemble(); compare it with the internal force A U.
+    {
+      TrilinosWrappers::MPI::Vector internal(locally_owned, comm);
+      bulk_matrix.vmult(internal, solution);
+      const double scale = std::max(internal.l2_norm(),
+                                    std::abs(load_factor) * load.l2_norm());
+      relative_residual = scale > 0. ? residual.l2_norm() / scale : 0.;
+      if (!(relative_residual <= 1e-4) && !prm.allow_non_convergence)
+        throw ConvergenceFailure(
+          "the accepted iterate is not an equilibrium (|R| / |A U| = " +
+          std::to_string(relative_residual) +
+          " > 1e-4): the nonlinear solver did not find a solution; a rigid "
+          "motion may be unrestrained (e.g. the tangential load exceeds the "
+          "friction limit F * normal force)");
+    }
     ghosted = solution;
 
     // Contact quantities at the quadrature points of the contact faces.
@@ -986,7 +1024,8 @@ namespace NitscheContact
        -Utilities::MPI::sum(tangential_force[0], comm)},
       {"tangential_force_y",
        -Utilities::MPI::sum(tangential_force[1], comm)},
-      {"max_friction_ratio", Utilities::MPI::max(max_ratio, comm)}};
+      {"max_friction_ratio", Utilities::MPI::max(max_ratio, comm)},
+      {"relative_residual", relative_residual}};
 
     if (exact_solution)
       {

@@ -125,6 +125,7 @@ namespace NitscheContact
     std::vector<unsigned char> previous_status;
     double                     load_factor = 1.;
     double                     last_contact_energy = 0.;
+    double                     relative_residual   = 0.; ///< |R|/|AU| at postprocess
   };
 } // namespace NitscheContact
 

@@ -1,0 +1,51 @@
+#!/bin/bash
+# Benchmark of the 3D elasticity model on the paper's test (parameters/
+# paper_3d.prm: clamped [0,10]^2 x (-0.005,0.005), Q2, body force -0.02/t,
+# plane obstacle x3 = -1, theta = 1, gamma0 = 20, frictionless), starting
+# from a coarse 8x8x1 mesh and refining globally each cycle (nested
+# iteration; each refinement also doubles the layers through the
+# thickness). Prints DoFs, nonlinear iterations and wall-clock seconds per
+# phase (from summary.json, 'Print timings = true'). Usage:
+#   benchmarks/elasticity.sh [path/to/nitsche-contact] [cycles] [direct|amg] [ranks]
+# The program must be built with CMAKE_BUILD_TYPE=Release. Nonlinear
+# tolerance 1e-6 (the round-off floor of this thin plate is ~1e-7).
+set -e
+here=$(cd "$(dirname "$0")/.." && pwd)
+exe=${1:-$here/build/nitsche-contact}
+cycles=${2:-2}
+solver=${3:-direct}
+ranks=${4:-1}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+sed -e "s/^\( *set Number of cycles *=\).*/\1 $cycles/" \
+    -e "s/^\( *set Subdivisions *=\).*/\1 8, 8, 1/" \
+    -e "s/^\( *set Tolerance *=\).*/\1 1e-6/" \
+    -e "s/^\( *set Maximum iterations *=\).*/\1 100/" \
+    -e "s|^\( *set Directory *=\).*|\1 $work/out|" \
+    -e "s/^\( *set Format *=\).*/\1 none/" \
+    -e "s/^\( *set Print timings *=\).*/\1 true/" \
+    -e "s/^\( *set Load applied as *=.*\)/\1\n  set Linear solver = $solver/" \
+    "$here/parameters/paper_3d.prm" > "$work/bench.prm"
+run=("$exe")
+if [ "$ranks" -gt 1 ]; then run=(mpirun -np "$ranks" "$exe"); fi
+start=$(date +%s.%N)
+"${run[@]}" "$work/bench.prm" > "$work/log" 2>&1 || { cat "$work/log"; exit 1; }
+end=$(date +%s.%N)
+python3 - "$work/out/summary.json" "$start" "$end" "$solver" "$ranks" <<'PY'
+import json, sys
+s = json.load(open(sys.argv[1]))
+print("3D elasticity model (Q2), paper test, linear solver %s, %s MPI rank(s)"
+      % (sys.argv[4], sys.argv[5]))
+print("%5s %9s %5s %8s %8s %8s %8s %8s %8s %9s" % ("cycle", "dofs", "its", "setup",
+      "assembly", "solve", "postproc", "output", "total", "force"))
+acc = 0.0
+for c in s["cycles"]:
+    t = c["wall_times"]
+    tot = t["setup"] + t["assembly"] + t["solve"] + t["postprocess"] + t["output"]
+    acc += tot
+    print("%5d %9d %5d %8.2f %8.2f %8.2f %8.2f %8.2f %8.2f %9.6f" % (c["cycle"], c["n_dofs"],
+          c["nonlinear_iterations"], t["setup"], t["assembly"], t["solve"],
+          t["postprocess"], t["output"], tot, c["contact_force"]))
+print("sum of phases %.1f s, wall clock of the run %.1f s"
+      % (acc, float(sys.argv[3]) - float(sys.argv[2])))
+PY

@@ -1,0 +1,125 @@
+"""Bad input must give exit status 1 and one clear message on stderr that
+names the entry and the offending value (and, for range errors, what is
+allowed); --help and --print-parameters must exit 0. No output directory
+may be created for a rejected parameter file."""
+import argparse
+import os
+import subprocess
+import sys
+
+p = argparse.ArgumentParser()
+p.add_argument("--exe", required=True)
+p.add_argument("--workdir", required=True)
+args = p.parse_args()
+os.makedirs(args.workdir, exist_ok=True)
+failures = []
+
+
+def check(ok, message):
+    print(("ok    " if ok else "FAIL  ") + message)
+    if not ok:
+        failures.append(message)
+
+
+def execute(argv):
+    return subprocess.run([args.exe] + argv, stdout=subprocess.PIPE,
+                          stderr=subprocess.PIPE, text=True, cwd=args.workdir)
+
+
+# (case, prm body, substrings the message must contain)
+CASES = [
+    ("unknown entry", "subsection Material\n  set Youngs modulus = 1\nend",
+     ["Youngs modulus", "Material"]),
+    ("misspelled subsection", "subsection Materail\n  set Poisson ratio = 0.3\nend",
+     ["Materail"]),
+    ("unknown top-level entry", "set Modell = elasticity", ["Modell"]),
+    ("E = 0", "subsection Material\n  set Young's modulus = 0\nend",
+     ["Young's modulus", "'0'", "> 0"]),
+    ("E < 0", "subsection Material\n  set Young's modulus = -2e5\nend",
+     ["Young's modulus", "-200000", "> 0"]),
+    ("E not a number", "subsection Material\n  set Young's modulus = abc\nend",
+     ["Young's modulus", "abc"]),
+    ("nu = 0.5", "subsection Material\n  set Poisson ratio = 0.5\nend",
+     ["Poisson ratio", "0.5", "(-1, 0.5)"]),
+    ("nu = -1", "subsection Material\n  set Poisson ratio = -1\nend",
+     ["Poisson ratio", "'-1'", "(-1, 0.5)"]),
+    ("nu > 0.5", "subsection Material\n  set Poisson ratio = 0.7\nend",
+     ["Poisson ratio", "0.7", "(-1, 0.5)"]),
+    ("thickness = 0", "subsection Geometry\n  set Thickness = 0\nend",
+     ["Thickness", "'0'", "> 0"]),
+    ("thickness < 0", "subsection Geometry\n  set Thickness = -0.01\nend",
+     ["Thickness", "-0.01", "> 0"]),
+    ("F < 0", "subsection Contact\n  set Friction coefficient = -0.2\nend",
+     ["Friction coefficient", "-0.2", ">= 0"]),
+    ("gamma0 = 0", "subsection Contact\n  set Nitsche gamma0 = 0\nend",
+     ["Nitsche gamma0", "'0'", "> 0"]),
+    ("gamma0 < 0", "subsection Contact\n  set Nitsche gamma0 = -5\nend",
+     ["Nitsche gamma0", "-5", "> 0"]),
+    ("theta = 0.5", "subsection Contact\n  set Nitsche theta = 0.5\nend",
+     ["Nitsche theta", "0.5", "1, 0, -1"]),
+    ("theta = 2", "subsection Contact\n  set Nitsche theta = 2\nend",
+     ["Nitsche theta", "'2'", "1, 0, -1"]),
+    ("unknown model", "set Model = elastic", ["Model", "elastic", "kirchhoff"]),
+    ("malformed probe list", "subsection Output\n  set Probe points = 1, 2; 3\nend",
+     ["Probe points", "1, 2; 3"]),
+    ("probe not numbers", "subsection Output\n  set Probe points = a, b\nend",
+     ["Probe points", "a, b"]),
+    ("unknown obstacle", "subsection Obstacle\n  set Type = cone\nend",
+     ["Obstacle/Type", "cone", "sphere"]),
+]
+
+# a regular file: a directory below it can never be created (even as root)
+blocker = os.path.join(args.workdir, "a_regular_file")
+with open(blocker, "w") as f:
+    f.write("not a directory\n")
+CASES.append(("unwritable output directory",
+              "subsection Output\n  set Directory = %s/out\nend" % blocker,
+              ["Output/Directory", blocker + "/out"]))
+
+for i, (case, body, expected) in enumerate(CASES):
+    prm = os.path.join(args.workdir, "case%02d.prm" % i)
+    outdir = os.path.join(args.workdir, "case%02d-out" % i)
+    with open(prm, "w") as f:
+        # a tiny valid problem, then the bad entry; the last 'set' wins
+        f.write("set Model = elasticity\n"
+                "subsection Geometry\n  set Subdivisions = 1, 1, 1\nend\n"
+                "subsection Output\n  set Directory = %s\n  set Format = none\nend\n"
+                % outdir)
+        f.write(body + "\n")
+    r = execute([prm])
+    message = r.stderr.strip()
+    check(r.returncode == 1, "%s: exit status %d == 1" % (case, r.returncode))
+    missing = [s for s in expected if s not in message]
+    check(not missing, "%s: message names %s: %s" % (case, expected, message.replace("\n", " ")[:300]))
+    check("error" in message and "internal error" not in message,
+          "%s: reported as an input error, not an internal error" % case)
+    if case != "unwritable output directory":
+        check(not os.path.exists(outdir), "%s: no output directory created" % case)
+
+r = execute([os.path.join(args.workdir, "does_not_exist.prm")])
+check(r.returncode == 1 and "does_not_exist.prm" in r.stderr,
+      "missing .prm: exit %d, message: %s" % (r.returncode, r.stderr.strip()))
+r = execute([])
+check(r.returncode == 1 and "no parameter file" in r.stderr,
+      "no argument: exit %d, message: %s" % (r.returncode, r.stderr.strip().splitlines()[0]))
+r = execute(["--frobnicate"])
+check(r.returncode == 1 and "--frobnicate" in r.stderr,
+      "unknown option: exit %d, message: %s" % (r.returncode, r.stderr.strip().splitlines()[0]))
+r = execute(["--help"])
+check(r.returncode == 0 and "Usage" in r.stdout, "--help: exit %d, prints usage" % r.returncode)
+r = execute(["--print-parameters"])
+check(r.returncode == 0 and "subsection Material" in r.stdout
+      and "set Nitsche theta" in r.stdout,
+      "--print-parameters: exit %d, prints the parameters" % r.returncode)
+# what --print-parameters prints must itself be a valid parameter file
+printed = os.path.join(args.workdir, "printed.prm")
+with open(printed, "w") as f:
+    f.write(r.stdout.replace("set Directory = results", "set Directory = %s"
+                             % os.path.join(args.workdir, "printed-out")))
+r2 = execute(["--help", printed])
+check(r2.returncode == 0, "--help wins over a file argument")
+
+if failures:
+    print("%d check(s) failed" % len(failures))
+    sys.exit(1)
+print("all checks passed")

@@ -1,0 +1,157 @@
+"""Coulomb friction of the 3D model: stick/slip threshold of a pressed block
+under a tangential load.
+
+Set-up: block [0,2] x [0,1] x (-0.1, 0.1) (flat, so that the shear load
+cannot tip it: tipping needs s t > p L / 2, i.e. s > 10 p), E = 100,
+nu = 0.3, on a rigid plane at its bottom face (gap 0), top traction
+(s, 0, -p) with p = 1, friction coefficient F = 0.5. The faces x = 0 and
+x = 2 are free; the faces y = 0 and y = 1 have symmetry conditions (u2 = 0),
+which remove the y translation and the rotation about z but leave the
+x translation restrained only by friction.
+
+Exact facts (independent of the mesh, theta and gamma0):
+- global equilibrium: v = e1 and v = e3 are discrete test functions with
+  zero strain and zero sigma(v), so the discrete equations give exactly
+  (up to the solver tolerance)
+      total normal reaction      P = integral of -Lambda_n = p * A,
+      total tangential reaction  T = -integral of Lambda_t,x = s * A,
+  with A = 2 the contact area;
+- the Coulomb law |Lambda_t| <= -F Lambda_n holds pointwise (ball
+  projection), with equality at sliding points;
+- hence |T| <= F P: for s > F p NO discrete solution exists, the program
+  must report failure (exit status 2) instead of a "converged" result;
+  for s < F p a solution exists (a sticking core holds the block).
+Checked: s / (F p) = 0.5 (everything sticks here; fixed point = Newton,
+since the fixed point then assembles the same linear system), 0.9 for
+theta = 1, 0, -1 (Q1) and theta = 1 (Q2), and 0.98 (partial slip: both stick
+and slip points, max |Lambda_t| / |Lambda_n| = F): converged, P = p A and
+T = s A to 1e-8 relative, max ratio <= F; s / (F p) = 1.02 and 1.2: exit
+status 2. Measured (Q1, theta = 1): 0.5 all 512 contact points stick;
+0.9: 336 stick / 176 slip; 0.98: 48 stick / 464 slip.
+The paper's fixed point with partial slip is printed for information: it
+freezes the slip direction and threshold (Tresca-like), so it carries no
+tangential stiffness at sliding points and, here, does not converge or
+meets a singular frozen system (exit status 2) once slip occurs.
+Runtime ~15 s in Release.
+"""
+from common import parse_args, run, check, finish
+
+args = parse_args()
+
+P, F, AREA = 1.0, 0.5, 2.0
+
+TEMPLATE = """
+set Model = elasticity
+subsection Geometry
+  set Length x = 2
+  set Length y = 1
+  set Thickness = 0.2
+  set Edge conditions = free, free, symmetry, symmetry
+  set Subdivisions = %(sub)s
+end
+subsection Material
+  set Young's modulus = 100
+  set Poisson ratio = 0.3
+end
+subsection Load
+  set Transverse load = %(q)r
+end
+subsection Obstacle
+  set Type = plane
+  set Level = -0.1
+end
+subsection Contact
+  set Nitsche theta = %(theta)d
+  set Nitsche gamma0 = 20
+  set Friction coefficient = %(F)r
+end
+subsection Elasticity
+  set Polynomial degree = %(degree)d
+  set Load applied as = top traction
+  set Top tangential traction = %(s)r; 0
+end
+subsection Nonlinear solver
+  set Scheme = %(scheme)s
+  set Tolerance = 1e-11
+  set Maximum iterations = %(maxit)d
+end
+subsection Output
+  set Probe points = 1, 0.5
+end
+"""
+
+
+def prm(ratio, theta=1, degree=1, scheme="newton", maxit=60):
+    return TEMPLATE % dict(sub="8, 4, 2" if degree == 1 else "4, 2, 1",
+                           q=-P, theta=theta, F=F, degree=degree,
+                           s=ratio * F * P, scheme=scheme, maxit=maxit)
+
+
+def name(ratio, theta=1, degree=1, scheme="newton"):
+    return "friction_%g_theta%d_Q%d_%s" % (ratio, theta, degree,
+                                            scheme.replace(" ", "_"))
+
+
+def check_equilibrium(c, ratio, tag, slip_expected):
+    s = ratio * F * P
+    ex = c["extra"]
+    check(c["converged"], tag + " converged in %d iterations" % c["nonlinear_iterations"])
+    check(abs(c["contact_force"] - P * AREA) <= 1e-8 * P * AREA,
+          tag + " normal reaction %.12g == p A = %g" % (c["contact_force"], P * AREA))
+    check(abs(ex["tangential_force_x"] - s * AREA) <= 1e-8 * s * AREA,
+          tag + " tangential reaction %.12g == s A = %.12g"
+          % (ex["tangential_force_x"], s * AREA))
+    check(abs(ex["tangential_force_y"]) <= 1e-10,
+          tag + " tangential reaction y %.3g == 0" % ex["tangential_force_y"])
+    check(ex["max_friction_ratio"] <= F * (1 + 1e-9),
+          tag + " max |Lambda_t|/|Lambda_n| = %.12g <= F" % ex["max_friction_ratio"])
+    print("      %s stick %d, slip %d of %d contact points"
+          % (tag, c["stick_points"], c["slip_points"], c["contact_points"]))
+    if slip_expected:
+        check(c["slip_points"] > 0 and c["stick_points"] > 0,
+              tag + " partial slip (stick %d, slip %d)" % (c["stick_points"], c["slip_points"]))
+        check(abs(ex["max_friction_ratio"] - F) <= 1e-9 * F,
+              tag + " the Coulomb bound is reached at slip points (%.12g == F)"
+              % ex["max_friction_ratio"])
+    else:
+        check(c["slip_points"] == 0 and c["stick_points"] == c["contact_points"],
+              tag + " everything sticks (%d of %d)" % (c["stick_points"], c["contact_points"]))
+
+
+# well below the threshold: full stick; fixed point and Newton coincide
+newton, _ = run(args, name(0.5), prm(0.5))
+check_equilibrium(newton["cycles"][-1], 0.5, "s/(Fp)=0.5 newton:", False)
+fixed, _ = run(args, name(0.5, scheme="fixed point"), prm(0.5, scheme="fixed point"))
+check_equilibrium(fixed["cycles"][-1], 0.5, "s/(Fp)=0.5 fixed point:", False)
+a, b = newton["cycles"][-1]["probes"][0], fixed["cycles"][-1]["probes"][0]
+check(abs(a - b) <= 1e-9 * abs(a),
+      "s/(Fp)=0.5: fixed point = Newton (mid-plane u3 %.12g vs %.12g)" % (b, a))
+
+# partial slip, all theta, and close to the threshold
+for ratio, theta, degree in ((0.9, 1, 1), (0.9, 0, 1), (0.9, -1, 1), (0.9, 1, 2),
+                             (0.98, 1, 1)):
+    s, _ = run(args, name(ratio, theta, degree), prm(ratio, theta, degree))
+    check_equilibrium(s["cycles"][-1], ratio,
+                      "s/(Fp)=%g theta=%+d Q%d:" % (ratio, theta, degree), True)
+
+# above the threshold: no equilibrium exists
+for ratio in (1.02, 1.2):
+    _, out = run(args, name(ratio), prm(ratio), expect_status=2)
+    msg = [l for l in out.splitlines() if "error" in l]
+    check(len(msg) == 1, "s/(Fp)=%g: exit status 2 with one message: %s"
+          % (ratio, msg[0] if msg else "(none)"))
+
+# information: the paper's fixed point with partial slip
+import subprocess
+import os
+os.makedirs(args.workdir, exist_ok=True)
+path = os.path.join(args.workdir, "friction_0.9_fixed_point.prm")
+with open(path, "w") as f:
+    f.write(prm(0.9, scheme="fixed point", maxit=60))
+    f.write("\nsubsection Output\n  set Directory = %s\n  set Format = none\nend\n"
+            % os.path.join(args.workdir, "friction_0.9_fixed_point"))
+proc = subprocess.run([args.exe, path], stdout=subprocess.PIPE,
+                      stderr=subprocess.STDOUT, text=True)
+print("      info: fixed point, s/(Fp)=0.9: exit status %d (%s)"
+      % (proc.returncode, (proc.stdout.strip().splitlines() or [""])[-1][:160]))
+finish()
