@@ -166,6 +166,8 @@ namespace NitscheContact
   /// convex energy J(u) = 1/2 a(u,u) - L(u) + sum over contact points of
   /// this density (1/(2r)) ([s_n]_-^2 - sigma_n^2); the driver uses J as the
   /// merit function of its line search. Returns NaN for other variants.
+  /// Valid for a rigid obstacle (lambda_scale = 1) only; the Kirchhoff
+  /// model's compliant-obstacle energy carries the factor itself.
   inline double
   contact_energy_density(const PointInput &in, const PointState &st)
   {

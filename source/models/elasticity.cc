@@ -43,6 +43,32 @@ namespace NitscheContact
       return s;
     }
 
+    /// The kernel input at a point of the contact face from the displacement
+    /// u and its gradient there: normal n, position x (for the gap to the
+    /// obstacle height field), Nitsche parameter r.
+    PointInput
+    contact_input(const Tensor<1, 3>     &u,
+                  const Tensor<2, 3>     &grad,
+                  const Tensor<1, 3>     &n,
+                  const Point<3>         &x,
+                  const double            r,
+                  const CommonParameters &prm,
+                  const ObstacleSurface  &obstacle)
+    {
+      const Tensor<1, 3> sn = stress(grad, prm.lambda(), prm.mu()) * n;
+      PointInput         in;
+      in.normal   = n;
+      in.u_n      = u * n;
+      in.sigma_n  = n * sn;
+      in.sigma_t  = sn - in.sigma_n * n;
+      in.slip     = u - in.u_n * n;
+      in.gap      = x[2] - obstacle.height(Point<2>(x[0], x[1]));
+      in.r        = r;
+      in.theta    = prm.theta;
+      in.friction = prm.friction;
+      return in;
+    }
+
     std::uint64_t
     status_hash(const std::vector<unsigned char> &status)
     {
@@ -83,18 +109,8 @@ namespace NitscheContact
                 grad[a] = in.solution_gradients[q][a];
                 u[a]    = in.solution_values[q][a];
               }
-            const Tensor<2, 3> s = stress(grad, prm.lambda(), prm.mu());
-            PointInput         pi;
-            pi.normal  = n;
-            pi.u_n     = u * n;
-            pi.sigma_n = n * (s * n);
-            pi.sigma_t = s * n - pi.sigma_n * n;
-            pi.slip    = u - pi.u_n * n;
-            const Point<3> &x = in.evaluation_points[q];
-            pi.gap      = x[2] - obstacle.height(Point<2>(x[0], x[1]));
-            pi.r        = r;
-            pi.theta    = prm.theta;
-            pi.friction = prm.friction;
+            const PointInput pi = contact_input(
+              u, grad, n, in.evaluation_points[q], r, prm, obstacle);
             const PointState st =
               evaluate_contact_point(pi, NonlinearScheme::newton);
             out[q](0) = -st.lambda_n;
@@ -643,19 +659,8 @@ namespace NitscheContact
                       u[a]    = u_values[q](a);
                       grad[a] = u_grads[q][a];
                     }
-                  const Tensor<2, 3> s  = stress(grad, lambda, mu);
-                  const Tensor<1, 3> sn = s * nrm;
-                  PointInput         in;
-                  in.normal  = nrm;
-                  in.u_n     = u * nrm;
-                  in.sigma_n = nrm * sn;
-                  in.sigma_t = sn - in.sigma_n * nrm;
-                  in.slip    = u - in.u_n * nrm;
-                  const Point<3> &x = fvf.quadrature_point(q);
-                  in.gap      = x[2] - obstacle.height(Point<2>(x[0], x[1]));
-                  in.r        = r;
-                  in.theta    = prm.theta;
-                  in.friction = prm.friction;
+                  const PointInput in = contact_input(
+                    u, grad, nrm, fvf.quadrature_point(q), r, prm, obstacle);
                   const PointState st = evaluate_contact_point(in, scheme);
                   status.push_back(static_cast<unsigned char>(st.status));
                   contact_energy += contact_energy_density(in, st) * fvf.JxW(q);
@@ -963,19 +968,8 @@ namespace NitscheContact
                       u[a]    = u_values[q](a);
                       grad[a] = u_grads[q][a];
                     }
-                  const Tensor<1, 3> sn =
-                    stress(grad, prm.lambda(), prm.mu()) * nrm;
-                  PointInput in;
-                  in.normal  = nrm;
-                  in.u_n     = u * nrm;
-                  in.sigma_n = nrm * sn;
-                  in.sigma_t = sn - in.sigma_n * nrm;
-                  in.slip    = u - in.u_n * nrm;
-                  const Point<3> &x = fvf.quadrature_point(q);
-                  in.gap      = x[2] - obstacle.height(Point<2>(x[0], x[1]));
-                  in.r        = r;
-                  in.theta    = prm.theta;
-                  in.friction = prm.friction;
+                  const PointInput in = contact_input(
+                    u, grad, nrm, fvf.quadrature_point(q), r, prm, obstacle);
                   const PointState st =
                     evaluate_contact_point(in, NonlinearScheme::newton);
                   const double JxW = fvf.JxW(q);

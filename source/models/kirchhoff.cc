@@ -801,6 +801,17 @@ namespace NitscheContact
 
 
   double
+  KirchhoffModel::energy_slope() const
+  {
+    if (!has_energy())
+      return std::numeric_limits<double>::quiet_NaN();
+    // `rhs` holds -R(U) (condensed), `increment` the last Newton correction
+    return -(rhs * increment);
+  }
+
+
+
+  double
   KirchhoffModel::energy() const
   {
     if (!has_energy())

@@ -741,6 +741,17 @@ namespace NitscheContact
 
 
   double
+  MindlinModel::energy_slope() const
+  {
+    if (prm.theta != 1. || prm.friction > 0.)
+      return std::numeric_limits<double>::quiet_NaN();
+    // `residual` holds -R(U) (condensed), `increment` the last Newton correction
+    return -(residual * increment);
+  }
+
+
+
+  double
   MindlinModel::energy() const
   {
     if (prm.theta != 1. || prm.friction > 0.)

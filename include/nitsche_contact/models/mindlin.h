@@ -86,6 +86,8 @@ namespace NitscheContact
     double
     energy() const override;
     double
+    energy_slope() const override;
+    double
     increment_energy_norm() const override;
     double
     solution_energy_norm() const override;
