@@ -1,0 +1,86 @@
+"""Issue 4 section 3 / issue 5: on the paper's test (clamped [0,10]^2,
+t = 0.01, E = 2e5, nu = 0.3, q = -0.02, plane obstacle at x3 = -1) the
+Reissner-Mindlin plate with inserted-kinematics Nitsche contact and the
+Kirchhoff-Love plate with the GSV method agree on matching 64 x 64 meshes.
+
+The two are independent discretisations (MITC4 Q1 vs C1 bicubic Hermite) of
+two plate models with two contact formulations; their difference has three
+sources: shear deformation (relative size ~ 5 (t/a)^2 = 5e-6, negligible),
+the theta-term bias of the Mindlin run (theta = 1, gamma0 = 200: bending
+stiffness changed by 3 (1 - nu^2) (lambda/E)^2 / gamma0 = 0.45 %), and the
+discretisation error of MITC4 at h = 0.156 (deflections O(h^2); measured
+against finer meshes in doc/mindlin.md: 0.6 % at (1,5), where the
+curvature is largest, 0.1 % elsewhere). Tolerances: total reaction and
+deflections in the contact zone 0.5 %, w(1,5) 1.5 %, and the mid-plane must
+reach the obstacle level -0.995 at the centre in both models (measured:
+0.09 %, 0.06 %, 0.04 %, 0.4 %). The contact
+*area* is not compared (see doc/results.md: it is not the same quantity in
+the two formulations)."""
+from common import parse_args, run, check, close, finish
+
+args = parse_args()
+
+COMMON = """
+subsection Geometry
+  set Length x = 10
+  set Length y = 10
+  set Thickness = 0.01
+  set Edge conditions = clamped, clamped, clamped, clamped
+end
+subsection Material
+  set Young's modulus = 2e5
+  set Poisson ratio = 0.3
+end
+subsection Load
+  set Transverse load = -0.02
+end
+subsection Obstacle
+  set Level = -1
+  set Plate obstacle convention = bottom face
+end
+subsection Output
+  set Probe points = 5, 5; 2.5, 5; 1, 5; 2.5, 2.5
+end
+"""
+
+mindlin, _ = run(args, "mindlin", COMMON + """
+set Model = mindlin
+subsection Geometry
+  set Subdivisions = 8, 8
+  set Number of cycles = 4
+end
+subsection Contact
+  set Nitsche theta = 1
+  set Nitsche gamma0 = 200
+end
+subsection Nonlinear solver
+  set Maximum iterations = 300
+end
+""")
+kirchhoff, _ = run(args, "kirchhoff", COMMON + """
+set Model = kirchhoff
+subsection Geometry
+  set Subdivisions = 16, 16
+  set Number of cycles = 3
+end
+subsection Kirchhoff
+  set Contact formulation = gsv
+end
+subsection Nonlinear solver
+  set Maximum iterations = 100
+end
+""")
+
+m, k = mindlin["cycles"][-1], kirchhoff["cycles"][-1]
+check(m["converged"] and k["converged"], "both runs converged")
+close(m["contact_force"], k["contact_force"], 5e-3, "total reaction, Mindlin vs Kirchhoff")
+close(m["probes"][1], k["probes"][1], 5e-3, "w(2.5,5), Mindlin vs Kirchhoff")
+close(m["probes"][3], k["probes"][3], 5e-3, "w(2.5,2.5), Mindlin vs Kirchhoff")
+close(m["probes"][2], k["probes"][2], 1.5e-2, "w(1,5), Mindlin vs Kirchhoff")
+for name, c in (("Mindlin", m), ("Kirchhoff", k)):
+    close(c["probes"][0], -0.995, 1e-6, "%s centre on the obstacle level" % name)
+    # the constraint holds at contact quadrature points; nodal values can
+    # dip below by O(h^2 curvature) near the free boundary (measured ~3e-6)
+    check(c["min_deflection"] >= -0.995 - 1e-5,
+          "%s: penetration below 1e-5 of the gap (min w = %.8f)" % (name, c["min_deflection"]))
+finish()
