@@ -100,6 +100,7 @@ namespace NitscheContact
     double       krylov_tolerance;
     std::vector<dealii::Point<3>> refinement_box;
     unsigned int local_refinement_steps;
+    unsigned int contact_quadrature_points;
 
     dealii::parallel::distributed::Triangulation<3> triangulation;
     dealii::FESystem<3>                             fe;
