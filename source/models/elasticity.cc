@@ -47,14 +47,21 @@ namespace NitscheContact
     /// u and its gradient there: normal n, position x (for the gap to the
     /// obstacle height field), Nitsche parameter r.
     PointInput
-    contact_input(const Tensor<1, 3>     &u,
-                  const Tensor<2, 3>     &grad,
-                  const Tensor<1, 3>     &n,
-                  const Point<3>         &x,
-                  const double            r,
-                  const CommonParameters &prm,
-                  const ObstacleSurface  &obstacle)
+    contact_input(const Vector<double>            &u_value,
+                  const std::vector<Tensor<1, 3>> &u_gradient,
+                  const Tensor<1, 3>              &n,
+                  const Point<3>                  &x,
+                  const double                     r,
+                  const CommonParameters          &prm,
+                  const ObstacleSurface           &obstacle)
     {
+      Tensor<1, 3> u;
+      Tensor<2, 3> grad;
+      for (unsigned int a = 0; a < 3; ++a)
+        {
+          u[a]    = u_value(a);
+          grad[a] = u_gradient[a];
+        }
       const Tensor<1, 3> sn = stress(grad, prm.lambda(), prm.mu()) * n;
       PointInput         in;
       in.normal   = n;
@@ -102,15 +109,13 @@ namespace NitscheContact
         n[2] = -1.;
         for (unsigned int q = 0; q < in.evaluation_points.size(); ++q)
           {
-            Tensor<2, 3> grad;
-            Tensor<1, 3> u;
-            for (unsigned int a = 0; a < 3; ++a)
-              {
-                grad[a] = in.solution_gradients[q][a];
-                u[a]    = in.solution_values[q][a];
-              }
-            const PointInput pi = contact_input(
-              u, grad, n, in.evaluation_points[q], r, prm, obstacle);
+            const PointInput pi = contact_input(in.solution_values[q],
+                                                in.solution_gradients[q],
+                                                n,
+                                                in.evaluation_points[q],
+                                                r,
+                                                prm,
+                                                obstacle);
             const PointState st =
               evaluate_contact_point(pi, NonlinearScheme::newton);
             out[q](0) = -st.lambda_n;
@@ -660,15 +665,9 @@ namespace NitscheContact
               for (unsigned int q = 0; q < face_quadrature.size(); ++q)
                 {
                   const Tensor<1, 3> nrm = fvf.normal_vector(q);
-                  Tensor<1, 3>       u;
-                  Tensor<2, 3>       grad;
-                  for (unsigned int a = 0; a < 3; ++a)
-                    {
-                      u[a]    = u_values[q](a);
-                      grad[a] = u_grads[q][a];
-                    }
-                  const PointInput in = contact_input(
-                    u, grad, nrm, fvf.quadrature_point(q), r, prm, obstacle);
+                  const PointInput in =
+                    contact_input(u_values[q], u_grads[q], nrm,
+                                  fvf.quadrature_point(q), r, prm, obstacle);
                   const PointState st = evaluate_contact_point(in, scheme);
                   status.push_back(static_cast<unsigned char>(st.status));
                   contact_energy += contact_energy_density(in, st) * fvf.JxW(q);
@@ -969,15 +968,9 @@ namespace NitscheContact
               for (unsigned int q = 0; q < face_quadrature.size(); ++q)
                 {
                   const Tensor<1, 3> nrm = fvf.normal_vector(q);
-                  Tensor<1, 3>       u;
-                  Tensor<2, 3>       grad;
-                  for (unsigned int a = 0; a < 3; ++a)
-                    {
-                      u[a]    = u_values[q](a);
-                      grad[a] = u_grads[q][a];
-                    }
-                  const PointInput in = contact_input(
-                    u, grad, nrm, fvf.quadrature_point(q), r, prm, obstacle);
+                  const PointInput in =
+                    contact_input(u_values[q], u_grads[q], nrm,
+                                  fvf.quadrature_point(q), r, prm, obstacle);
                   const PointState st =
                     evaluate_contact_point(in, NonlinearScheme::newton);
                   const double JxW = fvf.JxW(q);

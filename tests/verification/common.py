@@ -27,7 +27,7 @@ def run(args, name, prm_text, np=1, expect_status=0):
         f.write("\nsubsection Output\n  set Directory = %s\n  set Format = none\nend\n" % outdir)
     cmd = [args.exe, prm_file]
     if np > 1:
-        cmd = [args.mpiexec, "-np", str(np)] + cmd
+        cmd = [args.mpiexec or "mpiexec", "-np", str(np)] + cmd
     proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                           text=True, cwd=args.workdir)
     if proc.returncode != expect_status:
