@@ -135,11 +135,8 @@ namespace NitscheContact
         t.solve += timer.wall_time();
         ++solves;
 
-        // Convergence: the Newton correction at the current iterate is
-        // negligible in the energy norm. Points that keep flipping status
-        // with |s_n| ~ 0 (grazing contact of a flat plate on a flat
-        // obstacle) then do not matter, and a status that does matter
-        // produces a large correction.
+        // Size of the full Newton correction at the current iterate in the
+        // energy norm (used with the status test below).
         model.apply_increment(1.);
         const double du       = model.increment_energy_norm();
         const double u        = model.solution_energy_norm();
