@@ -12,22 +12,7 @@ namespace NitscheContact
 
   namespace
   {
-    [[noreturn]] void
-    bad_value(const std::string &entry,
-              const std::string &value,
-              const std::string &allowed)
-    {
-      throw InputError("invalid value '" + value + "' for parameter '" +
-                       entry + "': " + allowed);
-    }
 
-    std::string
-    str(const double x)
-    {
-      std::ostringstream s;
-      s << x;
-      return s.str();
-    }
 
     EdgeCondition
     parse_edge(const std::string &s, const std::string &entry)
@@ -73,6 +58,23 @@ namespace NitscheContact
       return out;
     }
   } // namespace
+
+  void
+  bad_value(const std::string &entry,
+            const std::string &value,
+            const std::string &allowed)
+  {
+    throw InputError("invalid value '" + value + "' for parameter '" +
+                     entry + "': " + allowed);
+  }
+
+  std::string
+  number_to_string(const double x)
+  {
+    std::ostringstream s;
+    s << x;
+    return s.str();
+  }
 
   std::string
   to_string(const EdgeCondition c)
@@ -358,11 +360,11 @@ namespace NitscheContact
       length_y  = prm.get_double("Length y");
       thickness = prm.get_double("Thickness");
       if (!(length_x > 0.))
-        bad_value("Geometry/Length x", str(length_x), "must be > 0");
+        bad_value("Geometry/Length x", number_to_string(length_x), "must be > 0");
       if (!(length_y > 0.))
-        bad_value("Geometry/Length y", str(length_y), "must be > 0");
+        bad_value("Geometry/Length y", number_to_string(length_y), "must be > 0");
       if (!(thickness > 0.))
-        bad_value("Geometry/Thickness", str(thickness), "must be > 0");
+        bad_value("Geometry/Thickness", number_to_string(thickness), "must be > 0");
       const auto e =
         Utilities::split_string_list(prm.get("Edge conditions"), ',');
       if (e.size() != 4)
@@ -394,10 +396,10 @@ namespace NitscheContact
       youngs_modulus = prm.get_double("Young's modulus");
       poisson_ratio  = prm.get_double("Poisson ratio");
       if (!(youngs_modulus > 0.))
-        bad_value("Material/Young's modulus", str(youngs_modulus),
+        bad_value("Material/Young's modulus", number_to_string(youngs_modulus),
                   "must be > 0");
       if (!(poisson_ratio > -1. && poisson_ratio < 0.5))
-        bad_value("Material/Poisson ratio", str(poisson_ratio),
+        bad_value("Material/Poisson ratio", number_to_string(poisson_ratio),
                   "must lie in the open interval (-1, 0.5)");
     }
     prm.leave_subsection();
@@ -427,7 +429,7 @@ namespace NitscheContact
       sphere_center = Point<3>(c[0], c[1], c[2]);
       sphere_radius = prm.get_double("Sphere radius");
       if (!(sphere_radius > 0.))
-        bad_value("Obstacle/Sphere radius", str(sphere_radius),
+        bad_value("Obstacle/Sphere radius", number_to_string(sphere_radius),
                   "must be > 0");
       obstacle_expression = prm.get("Height");
       if (obstacle_type == "function")
@@ -451,10 +453,10 @@ namespace NitscheContact
         bad_value("Contact/Nitsche theta", t, "allowed are 1, 0, -1");
       gamma0 = prm.get_double("Nitsche gamma0");
       if (!(gamma0 > 0.))
-        bad_value("Contact/Nitsche gamma0", str(gamma0), "must be > 0");
+        bad_value("Contact/Nitsche gamma0", number_to_string(gamma0), "must be > 0");
       friction = prm.get_double("Friction coefficient");
       if (!(friction >= 0.))
-        bad_value("Contact/Friction coefficient", str(friction),
+        bad_value("Contact/Friction coefficient", number_to_string(friction),
                   "must be >= 0");
     }
     prm.leave_subsection();
@@ -465,7 +467,7 @@ namespace NitscheContact
                                                   NonlinearScheme::fixed_point;
       tolerance = prm.get_double("Tolerance");
       if (!(tolerance > 0.))
-        bad_value("Nonlinear solver/Tolerance", str(tolerance),
+        bad_value("Nonlinear solver/Tolerance", number_to_string(tolerance),
                   "must be > 0");
       max_iterations        = prm.get_integer("Maximum iterations");
       line_search           = prm.get_bool("Line search");

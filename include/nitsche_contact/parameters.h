@@ -28,6 +28,18 @@ namespace NitscheContact
     using std::runtime_error::runtime_error;
   };
 
+  /// Throw the InputError "invalid value 'value' for parameter 'entry':
+  /// allowed" (the one message format for all bad input).
+  [[noreturn]] void
+  bad_value(const std::string &entry,
+            const std::string &value,
+            const std::string &allowed);
+
+  /// A number as the user would write it (shortest stream form), for
+  /// messages and logs.
+  std::string
+  number_to_string(double x);
+
   /// A nonlinear solve that did not converge (exit status 2).
   class ConvergenceFailure : public std::runtime_error
   {

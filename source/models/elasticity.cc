@@ -357,11 +357,7 @@ namespace NitscheContact
   std::vector<std::pair<std::string, std::string>>
   ElasticityModel::description() const
   {
-    auto s = [](const double x) {
-      std::ostringstream o;
-      o << x;
-      return o.str();
-    };
+    const auto s = number_to_string;
     return {{"element", "Q" + std::to_string(degree) + " hexahedra"},
             {"E", s(prm.youngs_modulus)},
             {"nu", s(prm.poisson_ratio)},

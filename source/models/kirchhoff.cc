@@ -28,22 +28,7 @@ namespace NitscheContact
 
   namespace
   {
-    std::string
-    str(const double x)
-    {
-      std::ostringstream s;
-      s << x;
-      return s.str();
-    }
 
-    [[noreturn]] void
-    bad_value(const std::string &entry,
-              const std::string &value,
-              const std::string &allowed)
-    {
-      throw InputError("invalid value '" + value + "' for parameter '" +
-                       entry + "': " + allowed);
-    }
 
     /// True (and the value) if the expression is a plain number.
     bool
@@ -157,7 +142,7 @@ namespace NitscheContact
         "1");
     if (prm.friction != 0.)
       bad_value("Contact/Friction coefficient",
-                str(prm.friction),
+                number_to_string(prm.friction),
                 "the Kirchhoff model is frictionless; allowed is 0");
 
     param.enter_subsection("Kirchhoff");
@@ -185,10 +170,10 @@ namespace NitscheContact
     param.leave_subsection();
 
     if (!(alpha_D >= 0.))
-      bad_value("Kirchhoff/Stabilisation alpha", str(alpha_D), "must be >= 0");
+      bad_value("Kirchhoff/Stabilisation alpha", number_to_string(alpha_D), "must be >= 0");
     if (!(kappa >= 0.))
       bad_value("Kirchhoff/Obstacle compliance kappa",
-                str(kappa),
+                number_to_string(kappa),
                 "must be >= 0");
     if (formulation == Formulation::gsv && alpha_D == 0. && kappa == 0.)
       bad_value("Kirchhoff/Stabilisation alpha",
@@ -232,26 +217,26 @@ namespace NitscheContact
                    formulation == Formulation::gsv ?
                      "gsv (Gustafsson-Stenberg-Videman stabilised)" :
                      "nitsche (Kirchhoff kinematics in the 3D Nitsche term)");
-    d.emplace_back("theta", str(prm.theta));
+    d.emplace_back("theta", number_to_string(prm.theta));
     if (formulation == Formulation::gsv)
       {
-        d.emplace_back("alpha*D", str(alpha_D));
+        d.emplace_back("alpha*D", number_to_string(alpha_D));
         d.emplace_back("r", "1/(alpha h_K^4), h_K = longest cell side");
       }
     else
       {
-        d.emplace_back("gamma0", str(prm.gamma0));
+        d.emplace_back("gamma0", number_to_string(prm.gamma0));
         d.emplace_back("r", "gamma0 E / t = " +
-                              str(prm.gamma0 * prm.youngs_modulus /
+                              number_to_string(prm.gamma0 * prm.youngs_modulus /
                                   prm.thickness));
       }
-    d.emplace_back("kappa", str(kappa));
-    d.emplace_back("bending stiffness D", str(D));
+    d.emplace_back("kappa", number_to_string(kappa));
+    d.emplace_back("bending stiffness D", number_to_string(D));
     d.emplace_back("obstacle convention",
                    prm.obstacle_level_is_midplane ?
                      "mid-plane (w >= z_obs)" :
                      "bottom face (w >= z_obs + t/2)");
-    d.emplace_back("quadrature points per direction", str(n_quadrature));
+    d.emplace_back("quadrature points per direction", number_to_string(n_quadrature));
     d.emplace_back("direct solver", direct_solver);
     return d;
   }

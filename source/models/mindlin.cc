@@ -25,22 +25,7 @@ namespace NitscheContact
 
   namespace
   {
-    [[noreturn]] void
-    bad_value(const std::string &entry,
-              const std::string &value,
-              const std::string &allowed)
-    {
-      throw InputError("invalid value '" + value + "' for parameter '" +
-                       entry + "': " + allowed);
-    }
 
-    std::string
-    str(const double x)
-    {
-      std::ostringstream s;
-      s << x;
-      return s.str();
-    }
 
     /// Read the "Mindlin" subsection; needs the friction coefficient for
     /// 'Membrane unknowns = auto'.
@@ -51,7 +36,7 @@ namespace NitscheContact
       prm.enter_subsection("Mindlin");
       s.shear_factor = prm.get_double("Shear correction factor");
       if (!(s.shear_factor > 0.))
-        bad_value("Mindlin/Shear correction factor", str(s.shear_factor),
+        bad_value("Mindlin/Shear correction factor", number_to_string(s.shear_factor),
                   "must be > 0 (5/6 for a homogeneous plate)");
       s.mitc4 = prm.get("Shear treatment") == "MITC4";
       s.membrane_setting = prm.get("Membrane unknowns");
@@ -187,23 +172,23 @@ namespace NitscheContact
                    settings.membrane ? "Q1 (w, phi_x, phi_y, u_x, u_y)" :
                                        "Q1 (w, phi_x, phi_y)");
     d.emplace_back("shear treatment", settings.mitc4 ? "MITC4" : "full");
-    d.emplace_back("shear correction factor", str(settings.shear_factor));
+    d.emplace_back("shear correction factor", number_to_string(settings.shear_factor));
     d.emplace_back("membrane unknowns",
                    settings.membrane ? "true" : "false");
     d.emplace_back("simple support", settings.soft_support ? "soft" : "hard");
-    d.emplace_back("thickness", str(prm.thickness));
-    d.emplace_back("E", str(prm.youngs_modulus));
-    d.emplace_back("nu", str(prm.poisson_ratio));
+    d.emplace_back("thickness", number_to_string(prm.thickness));
+    d.emplace_back("E", number_to_string(prm.youngs_modulus));
+    d.emplace_back("nu", number_to_string(prm.poisson_ratio));
     d.emplace_back("edges",
                    to_string(prm.edges[0]) + ", " + to_string(prm.edges[1]) +
                      ", " + to_string(prm.edges[2]) + ", " +
                      to_string(prm.edges[3]));
-    d.emplace_back("theta", str(prm.theta));
-    d.emplace_back("gamma0", str(prm.gamma0));
+    d.emplace_back("theta", number_to_string(prm.theta));
+    d.emplace_back("gamma0", number_to_string(prm.gamma0));
     d.emplace_back("Nitsche length h_n",
                    settings.nitsche_length_is_thickness ? "thickness" :
                                                           "cell size");
-    d.emplace_back("friction coefficient", str(prm.friction));
+    d.emplace_back("friction coefficient", number_to_string(prm.friction));
     d.emplace_back("obstacle convention",
                    prm.obstacle_level_is_midplane ? "mid-plane" :
                                                     "bottom face");
