@@ -155,16 +155,16 @@ namespace NitscheContact
             model.assemble(prm.scheme, false);
             double s1 = model.energy_slope();
             t.assembly += timer.wall_time();
-            if (s1 > 0.)
+            // The full step is accepted when the slope there is already
+            // small (always the case once the contact status has settled:
+            // J is then quadratic along dU and phi'(1) = 0 up to round-off).
+            if (s1 > 0.1 * std::abs(slope0))
               {
                 double a = 0., fa = slope0, b = 1., fb = s1;
+                int    side = 0; // Illinois: which end was kept last
                 for (unsigned int it = 0; it < 40; ++it)
                   {
-                    // secant point, safeguarded by bisection when it falls
-                    // in the outer quarters of the bracket
-                    step = a - fa * (b - a) / (fb - fa);
-                    if (!(step > a + 0.25 * (b - a) && step < b - 0.25 * (b - a)))
-                      step = 0.5 * (a + b);
+                    step = (a * fb - b * fa) / (fb - fa);
                     model.apply_increment(step);
                     timer.restart();
                     model.assemble(prm.scheme, false);
@@ -174,9 +174,19 @@ namespace NitscheContact
                         b - a <= 1e-10)
                       break;
                     if (fs < 0.)
-                      a = step, fa = fs;
+                      {
+                        a = step, fa = fs;
+                        if (side == -1)
+                          fb *= 0.5;
+                        side = -1;
+                      }
                     else
-                      b = step, fb = fs;
+                      {
+                        b = step, fb = fs;
+                        if (side == 1)
+                          fa *= 0.5;
+                        side = 1;
+                      }
                   }
               }
           }
