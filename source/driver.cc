@@ -131,7 +131,8 @@ namespace NitscheContact
         history.push_back(c.hash);
 
         timer.restart();
-        model.solve_linear();
+        const unsigned int linear_its = model.solve_linear();
+        records.back().linear_iterations += linear_its;
         t.solve += timer.wall_time();
         ++solves;
 
@@ -236,6 +237,8 @@ namespace NitscheContact
             line << ", changed " << c.n_changed << std::scientific
                  << std::setprecision(3) << ", |dU|_a/|U|_a " << relative
                  << ", |R| " << c.residual_norm;
+            if (linear_its > 0)
+              line << ", linear its " << linear_its;
             if (step < 1.)
               line << std::fixed << std::setprecision(4) << ", step "
                    << step;
@@ -532,6 +535,7 @@ namespace NitscheContact
           << ",\n      \"n_dofs\": " << r.n_dofs
           << ",\n      \"h\": " << json_number(r.h)
           << ",\n      \"nonlinear_iterations\": " << r.iterations
+          << ",\n      \"linear_iterations\": " << r.linear_iterations
           << ",\n      \"converged\": " << (r.converged ? "true" : "false")
           << ",\n      \"contact_points\": " << r.counts.n_points
           << ",\n      \"active_points\": " << r.counts.n_active

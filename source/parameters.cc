@@ -290,8 +290,13 @@ namespace NitscheContact
                         "Iteration limit per cycle.");
       prm.declare_entry(
         "Line search", "true", Patterns::Bool(),
-        "Fall back to backtracking on the residual norm when the contact "
-        "status cycles (a status seen before reappears).");
+        "Globalisation of the Newton steps. When the formulation has an "
+        "energy (theta = 1 and no friction): exact line search on it in "
+        "every iteration (the full step is taken whenever the slope there "
+        "is small, always the case once the contact status has settled). "
+        "Otherwise: full steps until the contact status cycles (a status "
+        "seen before reappears) or 'Damping after' iterations, then "
+        "backtracking on the residual norm. false: always full steps.");
       prm.declare_entry("Allow non-convergence", "false", Patterns::Bool(),
                         "If false (default) a run whose nonlinear solver "
                         "does not converge stops with exit status 2.");

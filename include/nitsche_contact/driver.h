@@ -62,6 +62,8 @@ namespace NitscheContact
       std::uint64_t  n_dofs     = 0;
       double         h          = 0.;
       unsigned int   iterations = 0;
+      /// Krylov iterations summed over the cycle (0 with direct solvers)
+      unsigned long  linear_iterations = 0;
       bool           converged  = false;
       ContactCounts  counts;
       CycleResults   results;

@@ -8,7 +8,8 @@
 //  - "nitsche": the paper's "Kirchhoff with Nitsche" variant, the 3D Nitsche
 //    term with Kirchhoff kinematics on the bottom face, sigma_n = lambda
 //    (t/2) Delta w, r = gamma0 E / t.
-// Uniform Cartesian meshes only, one MPI process, sparse direct solver.
+// Uniform Cartesian meshes only, one MPI process; sparse direct solver or
+// CG/GMRES with a geometric multigrid V-cycle (hermite_multigrid.h).
 #ifndef nitsche_contact_models_kirchhoff_h
 #define nitsche_contact_models_kirchhoff_h
 
@@ -26,6 +27,7 @@
 
 #include <nitsche_contact/fe/fe_bicubic_hermite.h>
 #include <nitsche_contact/model.h>
+#include <nitsche_contact/models/hermite_multigrid.h>
 #include <nitsche_contact/parameters.h>
 
 #include <memory>
@@ -184,6 +186,16 @@ namespace NitscheContact
     double       kappa;    ///< obstacle compliance
     unsigned int n_quadrature;
     std::string  direct_solver;
+    bool         use_multigrid = false; ///< "Linear solver = multigrid"
+    double       krylov_tolerance = 1e-9;
+    /// Krylov tolerance while the contact status still changes
+    static constexpr double loose_krylov_tolerance = 1e-2;
+    /// whether the last assemble(.., true) saw no status change
+    bool status_settled = false;
+    std::unique_ptr<HermiteMultigrid> multigrid;
+    /// Krylov iterations of the solve right after the last Galerkin
+    /// rebuild of the multigrid hierarchy (0: none yet), and of the last.
+    unsigned int mg_reference_iterations = 0, mg_last_iterations = 0;
     std::unique_ptr<dealii::FunctionParser<2>> exact_value, exact_gradient,
       exact_hessian;
 
