@@ -153,7 +153,7 @@ def write_table(name, title, header, rows, notes=""):
             s = s.replace(a, b)
         return s
     with open(path + ".tex", "w") as f:
-        f.write("%% %s\n\\begin{tabular}{%s}\n\\hline\n" % (title, "r" * len(header)))
+        f.write("%% %s\n\\begin{tabular}{%s}\n\\hline\n" % (tex(title), "r" * len(header)))
         f.write(" & ".join(tex(h) for h in header) + " \\\\\n\\hline\n")
         for r in rows:
             f.write(" & ".join(tex(c) for c in r) + " \\\\\n")
