@@ -149,7 +149,7 @@ namespace NitscheContact
           {
             // Exact line search on the convex J: find the zero of the
             // nondecreasing phi'(t) = R(U_k + t dU).dU in (0, 1] by a
-            // safeguarded regula falsi (Illinois). J is piecewise quadratic
+            // safeguarded regula falsi. J is piecewise quadratic
             // in t, so a few residual evaluations suffice.
             model.apply_increment(1.);
             timer.restart();
@@ -162,10 +162,15 @@ namespace NitscheContact
             if (s1 > 0.1 * std::abs(slope0))
               {
                 double a = 0., fa = slope0, b = 1., fb = s1;
-                int    side = 0; // Illinois: which end was kept last
                 for (unsigned int it = 0; it < 40; ++it)
                   {
+                    // secant point, safeguarded by bisection when it falls
+                    // in the outer quarters of the bracket (measured: fewer
+                    // Newton iterations on the paper's tests than the
+                    // Illinois variant of regula falsi)
                     step = (a * fb - b * fa) / (fb - fa);
+                    if (!(step > a + 0.25 * (b - a) && step < b - 0.25 * (b - a)))
+                      step = 0.5 * (a + b);
                     model.apply_increment(step);
                     timer.restart();
                     model.assemble(prm.scheme, false);
@@ -175,19 +180,9 @@ namespace NitscheContact
                         b - a <= 1e-10)
                       break;
                     if (fs < 0.)
-                      {
-                        a = step, fa = fs;
-                        if (side == -1)
-                          fb *= 0.5;
-                        side = -1;
-                      }
+                      a = step, fa = fs;
                     else
-                      {
-                        b = step, fb = fs;
-                        if (side == 1)
-                          fa *= 0.5;
-                        side = 1;
-                      }
+                      b = step, fb = fs;
                   }
               }
           }
