@@ -53,7 +53,7 @@ penetration is bounded (plates 1e-5; 3D 2e-4: with 3x3 contact points per
 face the nodes between them penetrate by 1e-4, doc/results.md).
 The contact area is not compared: it is a different quantity in GSV and
 in the inserted-kinematics formulations (doc/results.md).
-Runtime ~80 s in Release (the 16x16x1 3D run is 60 s, 155 iterations)."""
+Runtime ~80 s in Release (the 16x16x1 3D run is about 60 s, 195 iterations)."""
 import os
 import time
 from common import parse_args, run, check, close, finish
