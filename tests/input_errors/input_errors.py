@@ -66,6 +66,13 @@ CASES = [
      ["Probe points", "a, b"]),
     ("unknown obstacle", "subsection Obstacle\n  set Type = cone\nend",
      ["Obstacle/Type", "cone", "sphere"]),
+    ("Kirchhoff Krylov tolerance = 0",
+     "set Model = kirchhoff\nsubsection Kirchhoff\n  set Linear solver = multigrid\n"
+     "  set Krylov tolerance = 0\nend",
+     ["Kirchhoff/Krylov tolerance", "'0'", "(0, 1)"]),
+    ("Kirchhoff unknown linear solver",
+     "set Model = kirchhoff\nsubsection Kirchhoff\n  set Linear solver = amg\nend",
+     ["Linear solver", "amg", "multigrid"]),
 ]
 
 # a regular file: a directory below it can never be created (even as root)
