@@ -569,6 +569,7 @@ namespace NitscheContact
   void
   KirchhoffModel::setup_cycle(const unsigned int cycle)
   {
+    trial.valid = false;
     if (cycle == 0)
       {
         make_grid();
@@ -646,12 +647,44 @@ namespace NitscheContact
   KirchhoffModel::assemble(const NonlinearScheme scheme, const bool with_matrix)
   {
     const unsigned int nq = quadrature.size();
+
+    if (with_matrix && trial.valid && trial.scheme == scheme)
+      {
+        // The residual, the status and the counts at this iterate are those
+        // of the last assemble(scheme, false): build the matrix only.
+        trial.valid   = false;
+        system_matrix = 0.;
+        std::vector<types::global_dof_index> dofs(16);
+        FullMatrix<double>                   cell_matrix(16, 16);
+        for (unsigned int c = 0; c < cells.size(); ++c)
+          {
+            std::copy(cell_dofs.begin() + 16 * c,
+                      cell_dofs.begin() + 16 * (c + 1),
+                      dofs.begin());
+            cell_matrix = kit.bending;
+            cell_matrix.add(1., kit.contact_inactive);
+            for (unsigned int q = 0; q < nq; ++q)
+              if (trial.status[std::size_t(c) * nq + q])
+                cell_matrix.add(1., kit.contact_switch[q]);
+            constraints.distribute_local_to_global(cell_matrix,
+                                                   dofs,
+                                                   system_matrix);
+          }
+        system_matrix.compress(VectorOperation::add);
+        previous_status.swap(trial.status);
+        status_settled = (trial.counts.n_changed == 0);
+        return trial.counts;
+      }
+    trial.valid = false;
+
     ContactCounts      counts;
     std::uint64_t      hash = 1469598103934665603ull; // FNV-1a
 
     rhs = 0.;
     if (with_matrix)
       system_matrix = 0.;
+    else
+      trial.status.resize(previous_status.size());
 
     std::vector<types::global_dof_index> dofs(16);
     Vector<double>                       cell_residual(16);
@@ -714,6 +747,8 @@ namespace NitscheContact
               ++counts.n_changed;
             if (with_matrix)
               previous_status[k] = s;
+            else
+              trial.status[k] = s;
           }
 
         cell_residual *= -1.; // the right-hand side is -R(U)
@@ -735,6 +770,12 @@ namespace NitscheContact
     last_contact_energy  = with_energy ?
                              contact_energy :
                              std::numeric_limits<double>::quiet_NaN();
+    if (!with_matrix)
+      {
+        trial.valid  = true;
+        trial.scheme = scheme;
+        trial.counts = counts;
+      }
     return counts;
   }
 
@@ -846,6 +887,7 @@ namespace NitscheContact
   void
   KirchhoffModel::apply_increment(const double step)
   {
+    trial.valid = false;
     solution = base;
     solution.add(step, increment);
   }

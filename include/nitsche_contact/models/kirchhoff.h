@@ -67,7 +67,8 @@ namespace NitscheContact
     void
     set_load_factor(double factor) override
     {
-      load_factor = factor;
+      load_factor     = factor;
+      trial.valid     = false;
     }
     double
     energy() const override;
@@ -93,6 +94,7 @@ namespace NitscheContact
     dealii::Vector<double> &
     iterate()
     {
+      trial.valid = false;
       return solution;
     }
     const dealii::Vector<double> &
@@ -225,6 +227,19 @@ namespace NitscheContact
     dealii::TrilinosWrappers::SparseMatrix system_matrix;
     dealii::Vector<double>                 rhs; ///< -R(U), condensed
     std::vector<unsigned char>             previous_status;
+    /// What assemble(scheme, false) computed at the current iterate (the
+    /// driver's line search evaluates the residual at U + step dU, and the
+    /// next Newton iteration assembles at the same point): the status of
+    /// every contact point and the counts. assemble(scheme, true) at the
+    /// same iterate then only builds the matrix (the rhs is still the one
+    /// computed). Invalidated by every change of the iterate or the load.
+    struct TrialEvaluation
+    {
+      bool                       valid = false;
+      NonlinearScheme            scheme;
+      ContactCounts              counts;
+      std::vector<unsigned char> status;
+    } trial;
     /// Contact part of energy() at the iterate of the last assemble().
     double last_contact_energy = 0.;
 
