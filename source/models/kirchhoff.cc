@@ -134,7 +134,10 @@ namespace NitscheContact
         "Newton Jacobian, Chebyshev(4)-Jacobi smoothing, KLU on the coarsest "
         "level (halved while it has more than 1500 dofs). Memory and time "
         "grow linearly with the number of dofs; recommended from about "
-        "50,000 dofs on.");
+        "50,000 dofs on. For 'Contact formulation = gsv' only (not "
+        "'nitsche'); with the pure penalty (alpha = 0) a compliance kappa "
+        "far below h^4/D makes the contact stiffness dominate and the "
+        "Krylov iteration slow.");
       prm.declare_entry(
         "Krylov tolerance",
         "1e-9",
@@ -211,6 +214,15 @@ namespace NitscheContact
       bad_value("Kirchhoff/Obstacle compliance kappa",
                 number_to_string(kappa),
                 "must be >= 0");
+    if (use_multigrid && formulation == Formulation::nitsche)
+      bad_value("Kirchhoff/Linear solver",
+                "multigrid",
+                "the multigrid solver serves the 'gsv' contact formulation "
+                "(its r = 1/(alpha h^4) scales like the bending operator); "
+                "with 'Contact formulation = nitsche' r = gamma0 E / t "
+                "exceeds the bending stiffness by orders of magnitude, the "
+                "point smoother fails (measured: 260 Krylov iterations per "
+                "Newton step, no Newton convergence); use 'direct'");
     if (formulation == Formulation::gsv && alpha_D == 0. && kappa == 0.)
       bad_value("Kirchhoff/Stabilisation alpha",
                 "0",

@@ -70,6 +70,10 @@ CASES = [
      "set Model = kirchhoff\nsubsection Kirchhoff\n  set Linear solver = multigrid\n"
      "  set Krylov tolerance = 0\nend",
      ["Kirchhoff/Krylov tolerance", "'0'", "(0, 1)"]),
+    ("Kirchhoff multigrid with the nitsche formulation",
+     "set Model = kirchhoff\nsubsection Kirchhoff\n  set Linear solver = multigrid\n"
+     "  set Contact formulation = nitsche\nend",
+     ["Kirchhoff/Linear solver", "multigrid", "gsv", "direct"]),
     ("Kirchhoff unknown linear solver",
      "set Model = kirchhoff\nsubsection Kirchhoff\n  set Linear solver = amg\nend",
      ["Linear solver", "amg", "multigrid"]),
