@@ -9,6 +9,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/point.h>
+#include <deal.II/base/quadrature.h>
 
 #include <nitsche_contact/nitsche_kernel.h>
 
@@ -39,6 +40,17 @@ namespace NitscheContact
   /// messages and logs.
   std::string
   number_to_string(double x);
+
+  /// Tensor-product rule with n points per direction on a contact face or
+  /// cell: rule = "gauss" or "lobatto" (Gauss-Lobatto, which includes the
+  /// vertices; needs n >= 2). 'entry' names the parameter in the error.
+  dealii::Quadrature<2>
+  contact_rule(const std::string &rule,
+               unsigned int       n,
+               const std::string &entry);
+
+  /// The documentation string of the 'Contact quadrature rule' entries.
+  extern const char *const contact_rule_help;
 
   /// A nonlinear solve that did not converge (exit status 2).
   class ConvergenceFailure : public std::runtime_error

@@ -282,6 +282,9 @@ namespace NitscheContact
         "Gauss points per direction on contact faces; 0 selects degree + 3 "
         "(the integrand has kinks inside faces where the contact status "
         "changes).");
+      prm.declare_entry("Contact quadrature rule", "gauss",
+                        Patterns::Selection("gauss|lobatto"),
+                        contact_rule_help);
       prm.declare_entry("Local refinement steps", "0",
                         Patterns::Integer(0, 10),
                         "Extra refinements inside 'Refinement box'.");
@@ -309,10 +312,14 @@ namespace NitscheContact
     const std::string box = Utilities::trim(ph.get("Refinement box"));
     local_refinement_steps = ph.get_integer("Local refinement steps");
     contact_quadrature_points = ph.get_integer("Contact quadrature points");
+    contact_rule_name         = ph.get("Contact quadrature rule");
     ph.leave_subsection();
 
     if (contact_quadrature_points == 0)
       contact_quadrature_points = degree + 3;
+    contact_face_quadrature =
+      contact_rule(contact_rule_name, contact_quadrature_points,
+                   "Elasticity/Contact quadrature points");
     if (!box.empty())
       {
         for (const auto &corner : Utilities::split_string_list(box, ';'))
@@ -371,6 +378,11 @@ namespace NitscheContact
             {"r", "gamma0 E / h_n, h_n = |K|/|F| (cell height normal to the "
                   "contact face)"},
             {"friction", s(prm.friction)},
+            {"contact quadrature",
+             std::to_string(contact_quadrature_points) + "x" +
+               std::to_string(contact_quadrature_points) +
+               (contact_rule_name == "lobatto" ? " Gauss-Lobatto" :
+                                                 " Gauss")},
             {"load", prm.load_expression + (load_as_traction ?
                                               " (top traction)" :
                                               " (body force q/t)")},
@@ -623,8 +635,7 @@ namespace NitscheContact
     bulk_matrix.vmult(residual, solution);
     residual.sadd(-1., load_factor, load);
 
-    const unsigned int q1d = contact_quadrature_points;
-    const QGauss<2>    face_quadrature(q1d);
+    const Quadrature<2> &face_quadrature = contact_face_quadrature;
     FEFaceValues<3>    fvf(mapping, fe, face_quadrature,
                         update_values | update_gradients |
                           update_quadrature_points | update_JxW_values |
@@ -939,7 +950,7 @@ namespace NitscheContact
     ghosted = solution;
 
     // Contact quantities at the quadrature points of the contact faces.
-    const QGauss<2> face_quadrature(contact_quadrature_points);
+    const Quadrature<2> &face_quadrature = contact_face_quadrature;
     FEFaceValues<3> fvf(mapping, fe, face_quadrature,
                         update_values | update_gradients |
                           update_quadrature_points | update_JxW_values |

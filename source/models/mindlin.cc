@@ -53,6 +53,7 @@ namespace NitscheContact
       s.nitsche_length_is_thickness =
         prm.get("Nitsche length") == "thickness";
       s.contact_quadrature = prm.get_integer("Contact quadrature points");
+      s.contact_rule       = prm.get("Contact quadrature rule");
       s.linear_solver      = prm.get("Linear solver");
       prm.leave_subsection();
       return s;
@@ -111,7 +112,10 @@ namespace NitscheContact
                         Patterns::Integer(2, 12),
                         "Gauss points per direction and cell for the contact "
                         "integrals (the integrand has kinks inside cells); "
-                        "4 or more recommended.");
+                        "4 or more recommended for 'gauss'.");
+      prm.declare_entry("Contact quadrature rule", "gauss",
+                        Patterns::Selection("gauss|lobatto"),
+                        contact_rule_help);
       prm.declare_entry("Linear solver", "Amesos_Mumps",
                         Patterns::Selection("Amesos_Mumps|Amesos_Klu"),
                         "Sparse direct solver of Trilinos/Amesos.");
@@ -133,7 +137,10 @@ namespace NitscheContact
     , r(0.)
     , fe(FE_Q<2>(1), settings.membrane ? 5 : 3)
     , dof_handler(triangulation)
-    , contact_quadrature(settings.contact_quadrature)
+    , contact_quadrature(
+        contact_rule(settings.contact_rule,
+                     settings.contact_quadrature,
+                     "Mindlin/Contact quadrature points"))
     , obstacle(common)
   {
     if (Utilities::MPI::n_mpi_processes(comm) > 1)
@@ -194,7 +201,9 @@ namespace NitscheContact
                                                     "bottom face");
     d.emplace_back("contact quadrature",
                    std::to_string(settings.contact_quadrature) + "x" +
-                     std::to_string(settings.contact_quadrature) + " Gauss");
+                     std::to_string(settings.contact_quadrature) +
+                     (settings.contact_rule == "lobatto" ? " Gauss-Lobatto" :
+                                                           " Gauss"));
     d.emplace_back("linear solver", settings.linear_solver);
     return d;
   }

@@ -77,6 +77,13 @@ CASES = [
     ("Kirchhoff unknown linear solver",
      "set Model = kirchhoff\nsubsection Kirchhoff\n  set Linear solver = amg\nend",
      ["Linear solver", "amg", "multigrid"]),
+    ("Gauss-Lobatto contact rule with one point",
+     "subsection Elasticity\n  set Contact quadrature points = 1\n"
+     "  set Contact quadrature rule = lobatto\nend",
+     ["Elasticity/Contact quadrature points", "'1'", "at least 2"]),
+    ("unknown contact quadrature rule",
+     "set Model = mindlin\nsubsection Mindlin\n  set Contact quadrature rule = simpson\nend",
+     ["Contact quadrature rule", "simpson", "lobatto"]),
 ]
 
 # a regular file: a directory below it can never be created (even as root)

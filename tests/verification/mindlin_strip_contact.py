@@ -18,7 +18,9 @@ Differences expected between the Mindlin/Nitsche solution and this:
   L - 2l + 0.05].
 With theta = 1 the theta-term -(1/r) lambda^2 eps^2 (phi_x', chi_x') acts on
 the whole strip (doc/mindlin.md): the exact solution is then the strip with
-D' = D - c, c = lambda^2 eps^2 / r, which is checked as well."""
+D' = D - c, c = lambda^2 eps^2 / r, which is checked as well.
+The theta = 1 case is also run with the 2x2 Gauss-Lobatto (vertex) contact
+rule ('Contact quadrature rule = lobatto'), against the same solution."""
 from common import parse_args, run, check, close, finish
 
 args = parse_args()
@@ -51,6 +53,10 @@ subsection Nonlinear solver
   set Tolerance = 1e-8
   set Maximum iterations = 200
 end
+subsection Mindlin
+  set Contact quadrature points = %d
+  set Contact quadrature rule = %s
+end
 subsection Output
   set Probe points = 1, 0.5; 2, 0.5; 2.5, 0.5; 5, 0.5
 end
@@ -64,9 +70,11 @@ def strip(D):
     return l, w
 
 
-for theta, D in ((0, D0), (1, D0 - lam ** 2 * (t / 2) ** 2 / r)):
-    name = "mindlin_strip_theta%d" % theta
-    s, _ = run(args, name, TEMPLATE % theta)
+D1 = D0 - lam ** 2 * (t / 2) ** 2 / r
+for theta, D, n, rule in ((0, D0, 4, "gauss"), (1, D1, 4, "gauss"),
+                          (1, D1, 2, "lobatto")):
+    name = "mindlin_strip_theta%d%s" % (theta, "_lobatto" if rule == "lobatto" else "")
+    s, _ = run(args, name, TEMPLATE % (theta, n, rule))
     c = s["cycles"][-1]
     check(all(x["converged"] for x in s["cycles"]), name + ": all cycles converged")
     l, w = strip(D)

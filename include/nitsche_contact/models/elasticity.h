@@ -101,6 +101,9 @@ namespace NitscheContact
     std::vector<dealii::Point<3>> refinement_box;
     unsigned int local_refinement_steps;
     unsigned int contact_quadrature_points;
+    std::string  contact_rule_name;
+    /// contact_rule(contact_rule_name, contact_quadrature_points)
+    dealii::Quadrature<2> contact_face_quadrature;
 
     dealii::parallel::distributed::Triangulation<3> triangulation;
     dealii::FESystem<3>                             fe;

@@ -140,6 +140,7 @@ namespace NitscheContact
       bool         soft_support = false;
       bool         nitsche_length_is_thickness = true;
       unsigned int contact_quadrature          = 4;
+      std::string  contact_rule                = "gauss";
       std::string  linear_solver               = "Amesos_Mumps";
       std::string  membrane_setting            = "auto";
     };
@@ -196,7 +197,7 @@ namespace NitscheContact
     std::vector<dealii::DoFHandler<2>::active_cell_iterator> cell_grid;
 
     // Cell-independent data of the current cycle.
-    dealii::QGauss<2>                            contact_quadrature;
+    dealii::Quadrature<2>                        contact_quadrature;
     std::vector<double>                          contact_JxW;
     std::vector<std::vector<ShapeContactData>>   contact_shapes; // [q][i]
     std::vector<std::vector<double>>             shape_values;   // [q][i]
