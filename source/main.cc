@@ -66,7 +66,12 @@ int
 main(int argc, char *argv[])
 {
   using namespace NitscheContact;
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  // Threads: deal.II shares the node's cores among the MPI processes (one
+  // process on the 2-core machine: 2 threads for the threaded deal.II
+  // vector and matrix operations of the Kirchhoff multigrid V-cycle; two
+  // processes: one thread each). DEAL_II_NUM_THREADS caps it.
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(
+    argc, argv, dealii::numbers::invalid_unsigned_int);
   const bool root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
 
   dealii::ParameterHandler prm;

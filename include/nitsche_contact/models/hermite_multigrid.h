@@ -11,6 +11,13 @@
 // around point Jacobi (deal.II PreconditionChebyshev); coarse level: sparse
 // direct solve (Amesos KLU); cycle: deal.II's Multigrid V-cycle.
 //
+// The Galerkin products are formed in double precision with Trilinos
+// (EpetraExt); the V-cycle itself runs in single precision on deal.II
+// SparseMatrix<float> copies of the level matrices, whose products are
+// multithreaded. It is only a preconditioner of the double-precision Krylov
+// method on the exact Jacobian, and the smoother is bound by memory
+// bandwidth, which single precision halves (measured in doc/kirchhoff.md).
+//
 // Homogeneous Dirichlet-type constraints (clamped, simply supported and
 // symmetry edges) are handled by giving each constrained coarse dof the
 // prolongation "identity onto the same dof at the same vertex", which is
@@ -26,6 +33,9 @@
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
 #include <deal.II/multigrid/mg_base.h>
 #include <deal.II/multigrid/multigrid.h>
 
@@ -41,6 +51,8 @@ namespace NitscheContact
   public:
     using VectorType = dealii::TrilinosWrappers::MPI::Vector;
     using MatrixType = dealii::TrilinosWrappers::SparseMatrix;
+    /// vectors of the single-precision V-cycle
+    using LevelVector = dealii::Vector<float>;
 
     HermiteMultigrid(const FE_BicubicHermite<2> &fe, MPI_Comm comm);
     ~HermiteMultigrid();
@@ -92,6 +104,23 @@ namespace NitscheContact
     class Smoother;
     class CoarseSolver;
 
+    /// A single-precision copy of a (Trilinos) matrix. For square matrices
+    /// `offset` maps the e-th stored entry of the Trilinos matrix (row by
+    /// row) to its place in the deal.II row, counted from the diagonal,
+    /// which deal.II stores first, so that new values of a matrix with the
+    /// same pattern are copied without searching.
+    struct FloatMatrix
+    {
+      dealii::SparsityPattern       pattern;
+      dealii::SparseMatrix<float>   matrix;
+      std::vector<unsigned int>     offset;
+    };
+
+    /// Copy the values of A into F; with new_pattern also (re)build the
+    /// pattern of F from that of A.
+    static void
+    copy_matrix(const MatrixType &A, FloatMatrix &F, bool new_pattern);
+
     const FE_BicubicHermite<2> &fe;
     MPI_Comm                    comm;
     unsigned int                nx0 = 0, ny0 = 0;
@@ -101,12 +130,17 @@ namespace NitscheContact
     /// coarse matrices, levels 0 .. L-1 (level L is the given matrix)
     std::vector<std::unique_ptr<MatrixType>> coarse_matrices;
     const MatrixType                        *fine_matrix = nullptr;
+    /// single-precision level matrices 0 .. L (level L: copy of A)
+    std::vector<FloatMatrix> levels;
+    /// single-precision prolongation (l -> l+1) and its transpose
+    std::vector<FloatMatrix> prolong_f, restrict_f;
+    bool                     fine_pattern_ready = false;
 
     std::unique_ptr<Transfer>                  transfer;
     std::unique_ptr<LevelMatrices>             level_matrices;
     std::unique_ptr<Smoother>                  smoother;
     std::unique_ptr<CoarseSolver>              coarse;
-    std::unique_ptr<dealii::Multigrid<VectorType>> multigrid;
+    std::unique_ptr<dealii::Multigrid<LevelVector>> multigrid;
     std::vector<dealii::IndexSet>              level_sets;
   };
 } // namespace NitscheContact
