@@ -357,7 +357,12 @@ namespace NitscheContact
     DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
     const IndexSet owned = complete_index_set(dof_handler.n_dofs());
     system_matrix.reinit(owned, owned, dsp, comm);
+    constant_matrix.reinit(owned, owned, dsp, comm);
     rhs.reinit(dof_handler.n_dofs());
+    // assemble() distributes residual and matrix separately, which needs
+    // homogeneous constraints (all edge conditions of the model are).
+    AssertThrow(!constraints.has_inhomogeneities(),
+                ExcMessage("inhomogeneous constraints are not supported"));
 
     if (use_multigrid)
       {
@@ -382,6 +387,20 @@ namespace NitscheContact
       }
 
     build_cell_kit();
+
+    {
+      FullMatrix<double> m = kit.bending;
+      m.add(1., kit.contact_inactive);
+      std::vector<types::global_dof_index> dofs(16);
+      for (unsigned int c = 0; c < cells.size(); ++c)
+        {
+          std::copy(cell_dofs.begin() + 16 * c,
+                    cell_dofs.begin() + 16 * (c + 1),
+                    dofs.begin());
+          constraints.distribute_local_to_global(m, dofs, constant_matrix);
+        }
+      constant_matrix.compress(VectorOperation::add);
+    }
 
     // Load and obstacle at the quadrature points (cached: parsing is slow).
     const unsigned int nq = quadrature.size();
@@ -527,6 +546,9 @@ namespace NitscheContact
         kit.contact_switch[q] = m_act;
         kit.contact_switch[q].add(-1., m_in);
       }
+    kit.contact_all_active.reinit(16, 16);
+    for (unsigned int q = 0; q < nq; ++q)
+      kit.contact_all_active.add(1., kit.contact_switch[q]);
   }
 
 
@@ -665,25 +687,8 @@ namespace NitscheContact
       {
         // The residual, the status and the counts at this iterate are those
         // of the last assemble(scheme, false): build the matrix only.
-        trial.valid   = false;
-        system_matrix = 0.;
-        std::vector<types::global_dof_index> dofs(16);
-        FullMatrix<double>                   cell_matrix(16, 16);
-        for (unsigned int c = 0; c < cells.size(); ++c)
-          {
-            std::copy(cell_dofs.begin() + 16 * c,
-                      cell_dofs.begin() + 16 * (c + 1),
-                      dofs.begin());
-            cell_matrix = kit.bending;
-            cell_matrix.add(1., kit.contact_inactive);
-            for (unsigned int q = 0; q < nq; ++q)
-              if (trial.status[std::size_t(c) * nq + q])
-                cell_matrix.add(1., kit.contact_switch[q]);
-            constraints.distribute_local_to_global(cell_matrix,
-                                                   dofs,
-                                                   system_matrix);
-          }
-        system_matrix.compress(VectorOperation::add);
+        trial.valid = false;
+        assemble_matrix(trial.status);
         previous_status.swap(trial.status);
         status_settled = (trial.counts.n_changed == 0);
         return trial.counts;
@@ -694,14 +699,11 @@ namespace NitscheContact
     std::uint64_t      hash = 1469598103934665603ull; // FNV-1a
 
     rhs = 0.;
-    if (with_matrix)
-      system_matrix = 0.;
-    else
+    if (!with_matrix)
       trial.status.resize(previous_status.size());
 
     std::vector<types::global_dof_index> dofs(16);
     Vector<double>                       cell_residual(16);
-    FullMatrix<double>                   cell_matrix(16, 16);
     double                               u[16];
     double                               contact_energy = 0.;
     const bool                           with_energy = has_energy();
@@ -731,11 +733,6 @@ namespace NitscheContact
               for (unsigned int i = 0; i < 16; ++i)
                 cell_residual(i) -= fq * kit.values(i, q);
             }
-        if (with_matrix)
-          {
-            cell_matrix = kit.bending;
-            cell_matrix.add(1., kit.contact_inactive);
-          }
 
         // Contact terms through the generic kernel.
         for (unsigned int q = 0; q < nq; ++q)
@@ -753,8 +750,6 @@ namespace NitscheContact
               {
                 ++counts.n_active;
                 hash = (hash ^ k) * 1099511628211ull;
-                if (with_matrix)
-                  cell_matrix.add(1., kit.contact_switch[q]);
               }
             if (s != previous_status[k])
               ++counts.n_changed;
@@ -765,14 +760,10 @@ namespace NitscheContact
           }
 
         cell_residual *= -1.; // the right-hand side is -R(U)
-        if (with_matrix)
-          constraints.distribute_local_to_global(
-            cell_matrix, cell_residual, dofs, system_matrix, rhs);
-        else
-          constraints.distribute_local_to_global(cell_residual, dofs, rhs);
+        constraints.distribute_local_to_global(cell_residual, dofs, rhs);
       }
     if (with_matrix)
-      system_matrix.compress(VectorOperation::add);
+      assemble_matrix(previous_status);
 
     if (with_matrix)
       status_settled = (counts.n_changed == 0);
@@ -790,6 +781,42 @@ namespace NitscheContact
         trial.counts = counts;
       }
     return counts;
+  }
+
+
+
+  void
+  KirchhoffModel::assemble_matrix(const std::vector<unsigned char> &status)
+  {
+    const unsigned int nq = quadrature.size();
+    system_matrix.copy_from(constant_matrix);
+    std::vector<types::global_dof_index> dofs(16);
+    FullMatrix<double>                   cell_matrix(16, 16);
+    for (unsigned int c = 0; c < cells.size(); ++c)
+      {
+        const unsigned char *s = &status[std::size_t(c) * nq];
+        const unsigned int   n_active =
+          std::count_if(s, s + nq, [](unsigned char a) { return a != 0; });
+        if (n_active == 0)
+          continue;
+        if (n_active == nq)
+          cell_matrix = kit.contact_all_active;
+        else
+          {
+            cell_matrix = 0.;
+            for (unsigned int q = 0; q < nq; ++q)
+              if (s[q])
+                cell_matrix.add(1., kit.contact_switch[q]);
+          }
+        std::copy(cell_dofs.begin() + 16 * c,
+                  cell_dofs.begin() + 16 * (c + 1),
+                  dofs.begin());
+        // row and column form: no second diagonal entry on constrained
+        // rows (constant_matrix has them already)
+        constraints.distribute_local_to_global(cell_matrix, dofs, dofs,
+                                               system_matrix);
+      }
+    system_matrix.compress(VectorOperation::add);
   }
 
 

@@ -144,6 +144,8 @@ namespace NitscheContact
       dealii::FullMatrix<double> contact_inactive;
       /// per q: Jacobian(active) - Jacobian(inactive)
       std::vector<dealii::FullMatrix<double>> contact_switch;
+      /// sum over q of contact_switch (a cell whose points are all active)
+      dealii::FullMatrix<double> contact_all_active;
       /// per q: linearisations of each shape function for the kernel
       std::vector<std::vector<ShapeContactData>> shapes;
       std::vector<double>                        load_shape; ///< int N_i
@@ -225,6 +227,15 @@ namespace NitscheContact
 
     dealii::Vector<double> solution, base, increment;
     dealii::TrilinosWrappers::SparseMatrix system_matrix;
+    /// The part of the Jacobian that does not depend on the contact status:
+    /// bending plus the kernel Jacobian of every point in the inactive
+    /// state (assembled once per cycle).
+    dealii::TrilinosWrappers::SparseMatrix constant_matrix;
+    /// system_matrix = constant_matrix + the status-dependent contact
+    /// terms of the points with status[c nq + q] != 0 (only the cells with
+    /// an active point are visited).
+    void
+    assemble_matrix(const std::vector<unsigned char> &status);
     dealii::Vector<double>                 rhs; ///< -R(U), condensed
     std::vector<unsigned char>             previous_status;
     /// What assemble(scheme, false) computed at the current iterate (the
