@@ -98,10 +98,6 @@ namespace NitscheContact
       {
         timer.restart();
         const ContactCounts c = model.assemble(prm.scheme, true);
-        // energy at the current iterate (NaN if the formulation has none)
-        const double j0 =
-          prm.line_search ? model.energy() :
-                            std::numeric_limits<double>::quiet_NaN();
         t.assembly += timer.wall_time();
         records.back().counts = c;
         if (solves >= prm.max_iterations)
@@ -144,8 +140,11 @@ namespace NitscheContact
         const double relative = (u > 0.) ? du / u : (du == 0. ? 0. : 1.);
         double       step     = 1.;
         const double slope0   = model.energy_slope(); // at U_k along dU
-        if (relative > prm.tolerance && prm.line_search &&
-            std::isfinite(j0) && std::isfinite(slope0) && slope0 < 0.)
+        // The model has an energy J (theta = 1, frictionless) exactly when
+        // it returns a finite slope (model.h).
+        const bool has_energy = std::isfinite(slope0);
+        if (relative > prm.tolerance && prm.line_search && has_energy &&
+            slope0 < 0.)
           {
             // Exact line search on the convex J: find the zero of the
             // nondecreasing phi'(t) = R(U_k + t dU).dU in (0, 1] by a
@@ -187,15 +186,19 @@ namespace NitscheContact
               }
           }
         else if (relative > prm.tolerance && prm.line_search &&
-                 (damping || std::isfinite(j0)))
+                 (damping || has_energy))
           {
             // Backtracking. With an energy (theta = 1, frictionless) the
             // Newton direction is a descent direction of J: accept the
             // first step that does not increase J. Otherwise (only once
             // damping is on) Armijo on |R|. If no step down to 1/64 is
             // accepted, take the best one tried.
-            const bool   use_energy = std::isfinite(j0);
-            const double m0 = use_energy ? j0 : c.residual_norm;
+            // J(U_k): energy() uses the contact part of the last
+            // assemble(), which was at U_k
+            const bool use_energy = has_energy;
+            if (use_energy)
+              model.apply_increment(0.);
+            const double m0 = use_energy ? model.energy() : c.residual_norm;
             double       best_step = 1., best_merit = 0.;
             for (; step >= 1. / 64.; step *= 0.5)
               {
