@@ -2,18 +2,28 @@
 # Benchmark of the Mindlin model on the paper's test (parameters/
 # paper_mindlin.prm): DoFs, nonlinear iterations and wall-clock seconds per
 # phase for each refinement cycle, in Release. Usage:
-#   benchmarks/mindlin.sh [path/to/nitsche-contact] [number of cycles]
+#   benchmarks/mindlin.sh [path/to/nitsche-contact] [number of cycles] [gauss|lobatto]
+# The third argument selects the contact points: 'gauss' (default, 4x4 Gauss
+# as in paper_mindlin.prm) or 'lobatto' (2x2 Gauss-Lobatto = cell vertices;
+# fewer Newton iterations, doc/mindlin.md 4.1).
 # The program must be built with CMAKE_BUILD_TYPE=Release.
 set -e
 here=$(cd "$(dirname "$0")/.." && pwd)
 exe=${1:-$here/build/nitsche-contact}
 cycles=${2:-7}
+rule=${3:-gauss}
+case "$rule" in
+  gauss) points=4 ;;
+  lobatto) points=2 ;;
+  *) echo "benchmarks/mindlin.sh: contact rule must be 'gauss' or 'lobatto', not '$rule'" >&2; exit 1 ;;
+esac
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 sed -e "s/^\( *set Number of cycles *=\).*/\1 $cycles/" \
     -e "s|^\( *set Directory *=\).*|\1 $work/out|" \
     -e "s/^\( *set Format *=\).*/\1 none/" \
     -e "s/^\( *set Print iterations *=\).*/\1 false/" \
+    -e "s/^\( *set Membrane unknowns *=.*\)/\1\n  set Contact quadrature points = $points\n  set Contact quadrature rule = $rule/" \
     "$here/parameters/paper_mindlin.prm" > "$work/bench.prm"
 start=$(date +%s.%N)
 "$exe" "$work/bench.prm" > "$work/log" || { cat "$work/log"; exit 1; }
