@@ -2,6 +2,7 @@
 // obstacle term or "Kirchhoff with Nitsche". See doc/kirchhoff.md for the
 // formulation as implemented and theory.md section 4 for the derivations.
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/parallel.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
@@ -697,73 +698,96 @@ namespace NitscheContact
 
     ContactCounts      counts;
     std::uint64_t      hash = 1469598103934665603ull; // FNV-1a
+    const bool         with_energy = has_energy();
+    const std::size_t  n_cells     = cells.size();
 
-    rhs = 0.;
-    if (!with_matrix)
-      trial.status.resize(previous_status.size());
-
-    std::vector<types::global_dof_index> dofs(16);
-    Vector<double>                       cell_residual(16);
-    double                               u[16];
-    double                               contact_energy = 0.;
-    const bool                           with_energy = has_energy();
-
-    for (unsigned int c = 0; c < cells.size(); ++c)
-      {
-        for (unsigned int i = 0; i < 16; ++i)
+    // Phase 1, in parallel over cells (deal.II threads): per cell the
+    // residual (bulk and contact kernel), the contact energy and the status
+    // of each of its points. Phase 2, sequential in cell order: add the
+    // cell residuals into rhs and count, so that the result does not depend
+    // on the number of threads.
+    cell_residuals.resize(16 * n_cells);
+    cell_energies.resize(n_cells);
+    point_status.resize(n_cells * nq);
+    parallel::apply_to_subranges(
+      std::size_t(0),
+      n_cells,
+      [&](const std::size_t begin, const std::size_t end) {
+        Vector<double> cell_residual(16);
+        double         u[16];
+        for (std::size_t c = begin; c < end; ++c)
           {
-            dofs[i] = cell_dofs[16 * c + i];
-            u[i]    = solution[dofs[i]];
-          }
-        // Bulk residual a(U, N_i) - (f, N_i).
-        for (unsigned int i = 0; i < 16; ++i)
-          {
-            double a = 0.;
-            for (unsigned int j = 0; j < 16; ++j)
-              a += kit.bending(i, j) * u[j];
-            cell_residual(i) = a;
-          }
-        if (load_is_constant)
-          for (unsigned int i = 0; i < 16; ++i)
-            cell_residual(i) -= load_factor * load_constant * kit.load_shape[i];
-        else
-          for (unsigned int q = 0; q < nq; ++q)
-            {
-              const double fq = load_at(c, q) * kit.JxW[q];
-              for (unsigned int i = 0; i < 16; ++i)
-                cell_residual(i) -= fq * kit.values(i, q);
-            }
-
-        // Contact terms through the generic kernel.
-        for (unsigned int q = 0; q < nq; ++q)
-          {
-            const PointInput in = point_input(c, q, u);
-            const PointState st = evaluate_contact_point(in, scheme);
-            add_point_contribution(in, st, kit.shapes[q], kit.JxW[q], nullptr,
-                                   cell_residual);
-            if (with_energy)
-              contact_energy += energy_density(in, st) * kit.JxW[q];
-            const bool          active = st.status != PointStatus::inactive;
-            const unsigned char s      = active ? 1 : 0;
-            const std::size_t   k      = std::size_t(c) * nq + q;
-            if (active)
+            for (unsigned int i = 0; i < 16; ++i)
+              u[i] = solution[cell_dofs[16 * c + i]];
+            // Bulk residual a(U, N_i) - (f, N_i).
+            for (unsigned int i = 0; i < 16; ++i)
               {
-                ++counts.n_active;
-                hash = (hash ^ k) * 1099511628211ull;
+                double a = 0.;
+                for (unsigned int j = 0; j < 16; ++j)
+                  a += kit.bending(i, j) * u[j];
+                cell_residual(i) = a;
               }
-            if (s != previous_status[k])
-              ++counts.n_changed;
-            if (with_matrix)
-              previous_status[k] = s;
+            if (load_is_constant)
+              for (unsigned int i = 0; i < 16; ++i)
+                cell_residual(i) -=
+                  load_factor * load_constant * kit.load_shape[i];
             else
-              trial.status[k] = s;
-          }
+              for (unsigned int q = 0; q < nq; ++q)
+                {
+                  const double fq = load_at(c, q) * kit.JxW[q];
+                  for (unsigned int i = 0; i < 16; ++i)
+                    cell_residual(i) -= fq * kit.values(i, q);
+                }
 
-        cell_residual *= -1.; // the right-hand side is -R(U)
-        constraints.distribute_local_to_global(cell_residual, dofs, rhs);
+            // Contact terms through the generic kernel.
+            double energy = 0.;
+            for (unsigned int q = 0; q < nq; ++q)
+              {
+                const PointInput in = point_input(c, q, u);
+                const PointState st = evaluate_contact_point(in, scheme);
+                add_point_contribution(in, st, kit.shapes[q], kit.JxW[q],
+                                       nullptr, cell_residual);
+                if (with_energy)
+                  energy += energy_density(in, st) * kit.JxW[q];
+                point_status[c * nq + q] =
+                  (st.status != PointStatus::inactive) ? 1 : 0;
+              }
+            cell_energies[c] = energy;
+            // the right-hand side is -R(U)
+            for (unsigned int i = 0; i < 16; ++i)
+              cell_residuals[16 * c + i] = -cell_residual(i);
+          }
+      },
+      64);
+
+    rhs                   = 0.;
+    double contact_energy = 0.;
+    for (std::size_t c = 0; c < n_cells; ++c)
+      {
+        constraints.distribute_local_to_global(
+          cell_residuals.begin() + 16 * c,
+          cell_residuals.begin() + 16 * (c + 1),
+          cell_dofs.begin() + 16 * c,
+          rhs);
+        contact_energy += cell_energies[c];
+      }
+    for (std::size_t k = 0; k < point_status.size(); ++k)
+      {
+        if (point_status[k])
+          {
+            ++counts.n_active;
+            hash = (hash ^ k) * 1099511628211ull;
+          }
+        if (point_status[k] != previous_status[k])
+          ++counts.n_changed;
       }
     if (with_matrix)
-      assemble_matrix(previous_status);
+      {
+        previous_status.swap(point_status);
+        assemble_matrix(previous_status);
+      }
+    else
+      trial.status.swap(point_status);
 
     if (with_matrix)
       status_settled = (counts.n_changed == 0);

@@ -238,6 +238,10 @@ namespace NitscheContact
     assemble_matrix(const std::vector<unsigned char> &status);
     dealii::Vector<double>                 rhs; ///< -R(U), condensed
     std::vector<unsigned char>             previous_status;
+    /// work arrays of assemble(): per cell the 16 entries of -R and the
+    /// contact energy, per point the status just computed
+    std::vector<double>        cell_residuals, cell_energies;
+    std::vector<unsigned char> point_status;
     /// What assemble(scheme, false) computed at the current iterate (the
     /// driver's line search evaluates the residual at U + step dU, and the
     /// next Newton iteration assembles at the same point): the status of
