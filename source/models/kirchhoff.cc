@@ -270,7 +270,10 @@ namespace NitscheContact
     if (formulation == Formulation::gsv)
       {
         d.emplace_back("alpha*D", number_to_string(alpha_D));
-        d.emplace_back("r", "1/(alpha h_K^4), h_K = longest cell side");
+        d.emplace_back("r",
+                       alpha_D > 0. ?
+                         "1/(alpha h_K^4), h_K = longest cell side" :
+                         "1/kappa (alpha = 0: pure penalty, elastic obstacle)");
       }
     else
       {
