@@ -279,7 +279,8 @@ namespace NitscheContact
         "cycle (hanging nodes are handled by constraints).");
       prm.declare_entry(
         "Contact quadrature points", "0", Patterns::Integer(0, 12),
-        "Gauss points per direction on contact faces; 0 selects degree + 3 "
+        "Points per direction on contact faces (of the 'Contact quadrature "
+        "rule'); 0 selects degree + 3 "
         "(the integrand has kinks inside faces where the contact status "
         "changes).");
       prm.declare_entry("Contact quadrature rule", "gauss",

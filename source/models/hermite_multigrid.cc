@@ -252,6 +252,9 @@ namespace NitscheContact
                 diag);
           }
       }
+    AssertThrow(F.offset.size() == std::size_t(E.NumMyNonzeros()),
+                ExcMessage("HermiteMultigrid: the matrix pattern changed "
+                           "without a new setup()"));
     std::size_t e = 0;
     for (int r = 0; r < n_rows; ++r)
       {
