@@ -557,6 +557,31 @@ namespace NitscheContact
 
 
 
+  void
+  KirchhoffModel::cell_coefficients(const Vector<double> &v,
+                                    const std::size_t     c,
+                                    double               *u) const
+  {
+    for (unsigned int i = 0; i < 16; ++i)
+      u[i] = v[cell_dofs[16 * c + i]];
+  }
+
+
+
+  void
+  KirchhoffModel::bending_product(const double *u, double *a) const
+  {
+    for (unsigned int i = 0; i < 16; ++i)
+      {
+        double sum = 0.;
+        for (unsigned int j = 0; j < 16; ++j)
+          sum += kit.bending(i, j) * u[j];
+        a[i] = sum;
+      }
+  }
+
+
+
   double
   KirchhoffModel::load_at(const unsigned int c, const unsigned int q) const
   {
@@ -720,16 +745,9 @@ namespace NitscheContact
         double         u[16];
         for (std::size_t c = begin; c < end; ++c)
           {
-            for (unsigned int i = 0; i < 16; ++i)
-              u[i] = solution[cell_dofs[16 * c + i]];
+            cell_coefficients(solution, c, u);
             // Bulk residual a(U, N_i) - (f, N_i).
-            for (unsigned int i = 0; i < 16; ++i)
-              {
-                double a = 0.;
-                for (unsigned int j = 0; j < 16; ++j)
-                  a += kit.bending(i, j) * u[j];
-                cell_residual(i) = a;
-              }
+            bending_product(u, cell_residual.begin());
             if (load_is_constant)
               for (unsigned int i = 0; i < 16; ++i)
                 cell_residual(i) -=
@@ -968,15 +986,11 @@ namespace NitscheContact
     double u[16];
     for (unsigned int c = 0; c < cells.size(); ++c)
       {
+        cell_coefficients(v, c, u);
+        double a[16];
+        bending_product(u, a);
         for (unsigned int i = 0; i < 16; ++i)
-          u[i] = v[cell_dofs[16 * c + i]];
-        for (unsigned int i = 0; i < 16; ++i)
-          {
-            double a = 0.;
-            for (unsigned int j = 0; j < 16; ++j)
-              a += kit.bending(i, j) * u[j];
-            e += u[i] * a;
-          }
+          e += u[i] * a[i];
       }
     return std::sqrt(std::max(e, 0.));
   }
@@ -1032,8 +1046,7 @@ namespace NitscheContact
     double             u[16];
     for (unsigned int c = 0; c < cells.size(); ++c)
       {
-        for (unsigned int i = 0; i < 16; ++i)
-          u[i] = solution[cell_dofs[16 * c + i]];
+        cell_coefficients(solution, c, u);
         for (unsigned int q = 0; q < nq; ++q)
           {
             Tensor<2, 2> hess;
@@ -1127,8 +1140,7 @@ namespace NitscheContact
     double             u[16];
     for (unsigned int c = 0; c < cells.size(); ++c)
       {
-        for (unsigned int i = 0; i < 16; ++i)
-          u[i] = solution[cell_dofs[16 * c + i]];
+        cell_coefficients(solution, c, u);
         for (unsigned int q = 0; q < nq; ++q)
           {
             const PointInput in = point_input(c, q, u);
@@ -1186,8 +1198,7 @@ namespace NitscheContact
         double e0 = 0., e1 = 0., e2 = 0.;
         for (unsigned int c = 0; c < cells.size(); ++c)
           {
-            for (unsigned int i = 0; i < 16; ++i)
-              u[i] = solution[cell_dofs[16 * c + i]];
+            cell_coefficients(solution, c, u);
             const Point<2> x0 = cells[c]->vertex(0);
             for (unsigned int q = 0; q < nq; ++q)
               {
@@ -1249,8 +1260,7 @@ namespace NitscheContact
     double u[16];
     for (unsigned int c = 0; c < cells.size(); ++c)
       {
-        for (unsigned int i = 0; i < 16; ++i)
-          u[i] = solution[cell_dofs[16 * c + i]];
+        cell_coefficients(solution, c, u);
         double p = 0., a = 0., g = 0., area = 0.;
         for (unsigned int q = 0; q < nq; ++q)
           {

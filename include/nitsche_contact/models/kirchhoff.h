@@ -220,6 +220,14 @@ namespace NitscheContact
     std::vector<dealii::types::global_dof_index> cell_dofs;
 
     CellKit kit;
+    /// u[0..15] = the 16 coefficients of v on cell c (lexicographic index)
+    void
+    cell_coefficients(const dealii::Vector<double> &v,
+                      std::size_t                   c,
+                      double                       *u) const;
+    /// a = (cell bending matrix) u, for the 16 coefficients of one cell
+    void
+    bending_product(const double *u, double *a) const;
     bool    load_is_constant = true, psi_is_constant = true;
     double  load_constant = 0., psi_constant = 0.;
     double  load_factor = 1.; ///< load stepping (set_load_factor)
