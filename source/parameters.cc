@@ -338,6 +338,15 @@ namespace NitscheContact
                         "from this iteration on (0: always damped).");
       prm.declare_entry("Print iterations", "true", Patterns::Bool(),
                         "One log line per nonlinear iteration.");
+      prm.declare_entry(
+        "Reuse factorization", "true", Patterns::Bool(),
+        "Sparse direct solvers (MUMPS, KLU): when no contact point changed "
+        "status since the last factorisation, solve with GMRES "
+        "preconditioned by that factorisation (a preconditioned residual "
+        "reduction of 1e-12, one or two iterations when frictionless) "
+        "instead of factorising again; this is the confirming last "
+        "iteration of every cycle. false: factorise every Newton matrix. No "
+        "effect on the multigrid (Kirchhoff) and AMG (3D) solvers.");
     }
     prm.leave_subsection();
 
@@ -506,6 +515,7 @@ namespace NitscheContact
       print_iterations      = prm.get_bool("Print iterations");
       load_steps            = prm.get_integer("Load steps");
       damping_after         = prm.get_integer("Damping after");
+      reuse_factorization   = prm.get_bool("Reuse factorization");
     }
     prm.leave_subsection();
 

@@ -302,6 +302,10 @@ namespace NitscheContact
     , fe(FE_Q<3>(read_degree(ph)), 3)
     , mapping(1)
     , obstacle(common)
+    , direct_solver(ReusedFactorization::Settings{"Amesos_Mumps",
+                                                  common.reuse_factorization,
+                                                  10,
+                                                  1e-12})
   {
     ph.enter_subsection("Elasticity");
     degree              = ph.get_integer("Polynomial degree");
@@ -428,6 +432,7 @@ namespace NitscheContact
   ElasticityModel::setup_dofs()
   {
     dof_handler.distribute_dofs(fe);
+    direct_solver.clear();
     locally_owned    = dof_handler.locally_owned_dofs();
     locally_relevant = DoFTools::extract_locally_relevant_dofs(dof_handler);
 
@@ -746,6 +751,8 @@ namespace NitscheContact
     counts.n_stick   = Utilities::MPI::sum(counts.n_stick, comm);
     counts.n_slip    = Utilities::MPI::sum(counts.n_slip, comm);
     counts.n_changed = Utilities::MPI::sum(counts.n_changed, comm);
+    if (with_matrix)
+      last_changed = counts.n_changed;
     counts.hash      = Utilities::MPI::sum(counts.hash, comm);
     counts.residual_norm = residual.l2_norm();
     last_contact_energy = Utilities::MPI::sum(contact_energy, comm);
@@ -762,12 +769,13 @@ namespace NitscheContact
     unsigned int its = 0;
     if (linear_solver == "direct")
       {
-        SolverControl                  control(1, 0);
-        TrilinosWrappers::SolverDirect solver(
-          control,
-          TrilinosWrappers::SolverDirect::AdditionalData(false,
-                                                         "Amesos_Mumps"));
-        solver.solve(system_matrix, increment, residual);
+        // theta = 1 without friction: the Jacobian is the Hessian of the
+        // energy, symmetric (LDL^T in MUMPS)
+        its = direct_solver.solve(system_matrix,
+                                  increment,
+                                  residual,
+                                  prm.theta == 1. && prm.friction == 0.,
+                                  last_changed);
       }
     else
       {

@@ -16,10 +16,6 @@
 
 #include <nitsche_contact/models/kirchhoff.h>
 
-#include <Amesos_Mumps.h>
-#include <Epetra_LinearProblem.h>
-#include <Teuchos_ParameterList.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -188,6 +184,11 @@ namespace NitscheContact
       kappa        = param.get_double("Obstacle compliance kappa");
       n_quadrature = param.get_integer("Quadrature points");
       direct_solver = param.get("Direct solver");
+      factorization = std::make_unique<ReusedFactorization>(
+        ReusedFactorization::Settings{direct_solver,
+                                      common.reuse_factorization,
+                                      10,
+                                      1e-12});
       use_multigrid = (param.get("Linear solver") == "multigrid");
       krylov_tolerance = param.get_double("Krylov tolerance");
       const std::string grad = dealii::Utilities::trim(param.get("Exact gradient"));
@@ -322,6 +323,7 @@ namespace NitscheContact
   {
     HermiteTools::check_mesh(triangulation);
     dof_handler.distribute_dofs(fe);
+    factorization->clear();
 
     constraints.clear();
     for (unsigned int b = 0; b < 4; ++b)
@@ -923,33 +925,11 @@ namespace NitscheContact
         if (galerkin)
           mg_reference_iterations = linear_iterations;
       }
-    else if (direct_solver == "Amesos_Mumps")
-      {
-        // MUMPS through Amesos directly (not TrilinosWrappers::SolverDirect)
-        // to request the symmetric LDL^T factorisation when the Jacobian is
-        // symmetric (theta = 1), which halves the elimination work.
-        Epetra_LinearProblem problem(
-          const_cast<Epetra_CrsMatrix *>(&system_matrix.trilinos_matrix()),
-          &x.trilinos_vector(),
-          &b.trilinos_vector());
-        Amesos_Mumps           mumps(problem);
-        Teuchos::ParameterList list;
-        list.set("MatrixProperty",
-                 jacobian_is_symmetric() ? "symmetric" : "general");
-        mumps.SetParameters(list);
-        AssertThrow(mumps.SymbolicFactorization() == 0 &&
-                      mumps.NumericFactorization() == 0 && mumps.Solve() == 0,
-                    ExcMessage("MUMPS failed to solve the linear system of "
-                               "the Kirchhoff model."));
-      }
     else
-      {
-        SolverControl                                  control(1, 0.);
-        TrilinosWrappers::SolverDirect::AdditionalData data(false,
-                                                            direct_solver);
-        TrilinosWrappers::SolverDirect                 solver(control, data);
-        solver.solve(system_matrix, x, b);
-      }
+      // (frictionless: the matrix is the factorised one exactly when no
+      // point changed status)
+      linear_iterations = factorization->solve(
+        system_matrix, x, b, jacobian_is_symmetric(), status_settled ? 0 : 1);
 
     const double *xp = x.trilinos_vector()[0];
     std::copy(xp, xp + increment.size(), increment.begin());

@@ -141,6 +141,10 @@ namespace NitscheContact
         contact_rule(settings.contact_rule,
                      settings.contact_quadrature,
                      "Mindlin/Contact quadrature points"))
+    , direct_solver(ReusedFactorization::Settings{settings.linear_solver,
+                                                  common.reuse_factorization,
+                                                  10,
+                                                  1e-12})
     , obstacle(common)
   {
     if (Utilities::MPI::n_mpi_processes(comm) > 1)
@@ -230,6 +234,7 @@ namespace NitscheContact
   MindlinModel::setup_dofs()
   {
     dof_handler.distribute_dofs(fe);
+    direct_solver.clear();
 
     // The mesh is uniform and Cartesian: find the cell size and index the
     // cells by their (i, j) position. The precomputed cell data below rely
@@ -684,7 +689,10 @@ namespace NitscheContact
                              contact_energy :
                              std::numeric_limits<double>::quiet_NaN();
     if (with_matrix)
-      previous_status.swap(status);
+      {
+        previous_status.swap(status);
+        last_changed = counts.n_changed;
+      }
     return counts;
   }
 
@@ -693,15 +701,19 @@ namespace NitscheContact
   unsigned int
   MindlinModel::solve_linear()
   {
-    SolverControl                                 control(1, 0.);
-    TrilinosWrappers::SolverDirect::AdditionalData data(false,
-                                                        settings.linear_solver);
-    TrilinosWrappers::SolverDirect                solver(control, data);
-    increment = 0.;
-    solver.solve(system_matrix, increment, residual);
+    const IndexSet owned = complete_index_set(dof_handler.n_dofs());
+    TrilinosWrappers::MPI::Vector b(owned, comm), x(owned, comm);
+    std::copy(residual.begin(), residual.end(), b.trilinos_vector()[0]);
+    // theta = 1 without friction: the Jacobian is the Hessian of the
+    // energy, symmetric (LDL^T in MUMPS).
+    const bool symmetric = (prm.theta == 1. && prm.friction == 0.);
+    const unsigned int its =
+      direct_solver.solve(system_matrix, x, b, symmetric, last_changed);
+    const double *xp = x.trilinos_vector()[0];
+    std::copy(xp, xp + increment.size(), increment.begin());
     constraints.distribute(increment);
     base = solution;
-    return 0;
+    return its;
   }
 
 

@@ -16,6 +16,7 @@
 
 #include <nitsche_contact/model.h>
 #include <nitsche_contact/parameters.h>
+#include <nitsche_contact/reused_factorization.h>
 
 #include <memory>
 
@@ -130,6 +131,8 @@ namespace NitscheContact
     double                     load_factor = 1.;
     double                     last_contact_energy = 0.;
     double                     relative_residual   = 0.; ///< |R|/|AU| at postprocess
+    unsigned long last_changed = 0; ///< status changes of the last matrix
+    ReusedFactorization        direct_solver; ///< 'Linear solver = direct'
   };
 } // namespace NitscheContact
 

@@ -29,6 +29,7 @@
 #include <nitsche_contact/model.h>
 #include <nitsche_contact/models/hermite_multigrid.h>
 #include <nitsche_contact/parameters.h>
+#include <nitsche_contact/reused_factorization.h>
 
 #include <memory>
 
@@ -197,6 +198,8 @@ namespace NitscheContact
     /// whether the last assemble(.., true) saw no status change
     bool status_settled = false;
     std::unique_ptr<HermiteMultigrid> multigrid;
+    /// 'Linear solver = direct'
+    std::unique_ptr<ReusedFactorization> factorization;
     /// Krylov iterations of the solve right after the last Galerkin
     /// rebuild of the multigrid hierarchy (0: none yet), and of the last.
     unsigned int mg_reference_iterations = 0, mg_last_iterations = 0;

@@ -26,6 +26,7 @@
 
 #include <nitsche_contact/model.h>
 #include <nitsche_contact/parameters.h>
+#include <nitsche_contact/reused_factorization.h>
 
 #include <memory>
 
@@ -215,6 +216,8 @@ namespace NitscheContact
 
     dealii::TrilinosWrappers::SparseMatrix constant_matrix;
     dealii::TrilinosWrappers::SparseMatrix system_matrix;
+    ReusedFactorization                    direct_solver;
+    unsigned long last_changed = 0; ///< status changes of the last matrix
     dealii::Vector<double>                 load;      // condensed F
     dealii::Vector<double>                 residual;  // -R(U), condensed
     dealii::Vector<double>                 solution;  // U
