@@ -84,6 +84,9 @@ CASES = [
     ("unknown contact quadrature rule",
      "set Model = mindlin\nsubsection Mindlin\n  set Contact quadrature rule = simpson\nend",
      ["Contact quadrature rule", "simpson", "lobatto"]),
+    ("factorisation reuse not a bool",
+     "subsection Nonlinear solver\n  set Reuse factorization = sometimes\nend",
+     ["Reuse factorization", "sometimes", "Bool"]),
 ]
 
 # a regular file: a directory below it can never be created (even as root)
