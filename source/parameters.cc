@@ -341,12 +341,14 @@ namespace NitscheContact
       prm.declare_entry(
         "Reuse factorization", "true", Patterns::Bool(),
         "Sparse direct solvers (MUMPS, KLU): when no contact point changed "
-        "status since the last factorisation, solve with GMRES "
-        "preconditioned by that factorisation (a preconditioned residual "
-        "reduction of 1e-12, one or two iterations when frictionless) "
-        "instead of factorising again; this is the confirming last "
-        "iteration of every cycle. false: factorise every Newton matrix. No "
-        "effect on the multigrid (Kirchhoff) and AMG (3D) solvers.");
+        "status since the last factorisation, do not factorise again. "
+        "Without friction the Newton matrix is then the factorised one and "
+        "one substitution with the kept factors gives the same solution as "
+        "a new factorisation (the confirming last iteration of every cycle, "
+        "damped steps that keep the status); with friction the kept factors "
+        "precondition GMRES (reduction 1e-12, at most 10 iterations, else a "
+        "new factorisation). false: factorise every Newton matrix. No effect "
+        "on the multigrid (Kirchhoff) and AMG (3D) solvers.");
     }
     prm.leave_subsection();
 

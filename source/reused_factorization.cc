@@ -7,16 +7,16 @@
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
 #include <Epetra_LinearProblem.h>
-#include <Teuchos_ParameterList.hpp>
 
+#include <algorithm>
 #include <limits>
 
 namespace NitscheContact
 {
   using namespace dealii;
 
-  ReusedFactorization::ReusedFactorization(const Settings &settings)
-    : settings(settings)
+  ReusedFactorization::ReusedFactorization(const Settings &s)
+    : settings(s)
   {}
 
 
@@ -33,6 +33,15 @@ namespace NitscheContact
   void
   ReusedFactorization::clear()
   {
+    release();
+    gmres_failed = false;
+  }
+
+
+
+  void
+  ReusedFactorization::release()
+  {
     direct.reset();
     problem.reset();
     factored.clear();
@@ -41,11 +50,9 @@ namespace NitscheContact
 
 
   void
-  ReusedFactorization::factorize(const TrilinosWrappers::SparseMatrix &A,
-                                 const bool                            symmetric)
+  ReusedFactorization::factorize(const TrilinosWrappers::SparseMatrix &A)
   {
-    direct.reset();
-    problem.reset();
+    release();
     // A copy: the caller reassembles its matrix in place, the factorisation
     // has to stay that of the copied one.
     factored.copy_from(A);
@@ -57,15 +64,14 @@ namespace NitscheContact
                 ExcMessage("the Trilinos Amesos package '" + settings.solver +
                            "' is not available in this Trilinos build"));
     direct.reset(factory.Create(settings.solver.c_str(), *problem));
-    Teuchos::ParameterList list;
-    list.set("MatrixProperty", symmetric ? "symmetric" : "general");
-    direct->SetParameters(list);
-    AssertThrow(direct->SymbolicFactorization() == 0 &&
-                  direct->NumericFactorization() == 0,
-                ExcMessage("the sparse direct solver " + settings.solver +
-                           " failed to factorise the Newton matrix"));
-    factored_symmetric = symmetric;
-    ++factorizations;
+    if (direct->SymbolicFactorization() != 0 ||
+        direct->NumericFactorization() != 0)
+      {
+        release();
+        AssertThrow(false,
+                    ExcMessage("the sparse direct solver " + settings.solver +
+                               " failed to factorise the Newton matrix"));
+      }
   }
 
 
@@ -89,24 +95,20 @@ namespace NitscheContact
   ReusedFactorization::solve(const TrilinosWrappers::SparseMatrix &A,
                              TrilinosWrappers::MPI::Vector        &x,
                              const TrilinosWrappers::MPI::Vector  &b,
-                             const bool                            symmetric,
-                             const unsigned long changed_points)
+                             const Change                          change)
   {
     x = 0.;
-    const double b_norm = b.l2_norm();
-    if (b_norm == 0.)
-      return 0;
-
-    if (settings.reuse && direct && symmetric == factored_symmetric &&
-        changed_points == 0 &&
-        factored.m() == A.m() && factored.n_nonzero_elements() ==
-                                   A.n_nonzero_elements())
+    const bool kept = settings.reuse && direct && factored.m() == A.m() &&
+                      factored.n_nonzero_elements() == A.n_nonzero_elements();
+    if (kept && change == Change::none)
       {
-        // Left preconditioning: GMRES measures the preconditioned residual
-        // P^{-1}(b - A x), about the error x* - x when P is close to A. The
-        // plain residual would say little: with contact stiffness r next to
-        // the soft bending modes, a residual of 1e-12 |b| can leave an error
-        // of order one in those modes.
+        vmult(x, b);
+        return 1;
+      }
+    if (kept && change == Change::small && gmres_failed)
+      gmres_failed = false; // skip one attempt after a failure, then retry
+    else if (kept && change == Change::small)
+      {
         ReductionControl control(settings.max_iterations,
                                  std::numeric_limits<double>::min(),
                                  settings.tolerance,
@@ -123,10 +125,12 @@ namespace NitscheContact
           }
         catch (const SolverControl::NoConvergence &)
           {
-            x = 0.;
+            // (collective: every rank sees the same residual norms)
+            x            = 0.;
+            gmres_failed = true;
           }
       }
-    factorize(A, symmetric);
+    factorize(A);
     vmult(x, b);
     return 0;
   }

@@ -95,7 +95,9 @@ namespace NitscheContact
     assemble(NonlinearScheme scheme, bool with_matrix) = 0;
 
     /// Solve the assembled system for the increment; returns the number of
-    /// linear iterations (0 for direct solvers).
+    /// linear iterations (Krylov iterations; for direct solvers the
+    /// substitutions or GMRES iterations done with a kept factorisation, 0
+    /// after a new factorisation).
     virtual unsigned int
     solve_linear() = 0;
 

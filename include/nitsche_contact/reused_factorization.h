@@ -1,17 +1,25 @@
 // A sparse direct solver (Trilinos Amesos: MUMPS or KLU) for the Newton
-// matrices of one mesh that
-// - uses MUMPS' LDL^T factorisation when the caller says the matrix is
-//   symmetric (theta = 1 without friction), about half the work of LU;
-// - keeps the last factorisation and, when no contact point changed status
-//   since, solves with GMRES preconditioned by it instead of factorising
-//   again. Frictionless, the matrix is then the factorised one and GMRES
-//   stops after one or two forward/backward substitutions; with friction
-//   the slip directions still move it a little. This is the final,
-//   confirming iteration of every cycle. (Reusing it also after a few status
-//   changes was measured and not kept: GMRES then needs about two
-//   iterations per changed point, and the Newton path on the paper's tests
-//   is so sensitive to round-off that it changed, to more iterations on the
-//   first cycles.) If GMRES does not converge, the matrix is factorised.
+// matrices of one mesh that keeps the last factorisation for the following
+// Newton iterations whose contact status did not change:
+// - without friction the Newton matrix depends on the iterate only through
+//   the contact status, so it is then bitwise the factorised one: one
+//   forward/backward substitution with the kept factors gives exactly what
+//   a new factorisation would (MUMPS and KLU are deterministic), the Newton
+//   path is unchanged, and the factorisation is saved. This is the
+//   confirming last iteration of every cycle and every damped step that
+//   keeps the status;
+// - with friction the slip directions still move the matrix a little:
+//   GMRES, left-preconditioned by the kept factorisation (its preconditioned
+//   residual is about the error; the plain residual of these systems can be
+//   1e-12 |b| with an error of order one in the soft bending modes), and a
+//   new factorisation if it does not converge within a few iterations.
+// Reusing the factors after status changes was measured and not kept:
+// GMRES then needs about two iterations per changed point, and its
+// round-off changed the Newton path of the paper's Mindlin test (9 -> 22
+// iterations on the first cycle).
+//
+// (MUMPS factorises as LU here even for symmetric Jacobians: Amesos 13.2
+// always calls it with SYM = 0 and ignores its "MatrixProperty" setting.)
 #ifndef nitsche_contact_reused_factorization_h
 #define nitsche_contact_reused_factorization_h
 
@@ -42,6 +50,18 @@ namespace NitscheContact
       double tolerance = 1e-12;
     };
 
+    /// How the matrix of a solve relates to the last factorised one; the
+    /// caller knows (its contact status and friction law).
+    enum class Change
+    {
+      /// bitwise the same matrix (frictionless, no status change since)
+      none,
+      /// the same contact status, entries moved a little (friction)
+      small,
+      /// anything else: factorise
+      other
+    };
+
     explicit ReusedFactorization(const Settings &settings);
     ~ReusedFactorization();
 
@@ -49,26 +69,16 @@ namespace NitscheContact
     void
     clear();
 
-    /// Solve A x = b. `symmetric` lets MUMPS use an LDL^T factorisation;
-    /// `changed_points` is the caller's count of contact points whose
-    /// status changed since its previous matrix (the kept factorisation is
-    /// tried only when it is 0). Returns the GMRES iterations (0 when the
-    /// matrix was factorised).
+    /// Solve A x = b. Returns the number of substitutions (Change::none) or
+    /// GMRES iterations (Change::small) done with the kept factorisation,
+    /// 0 when the matrix was factorised.
     unsigned int
     solve(const dealii::TrilinosWrappers::SparseMatrix &A,
           dealii::TrilinosWrappers::MPI::Vector        &x,
           const dealii::TrilinosWrappers::MPI::Vector  &b,
-          bool                                          symmetric,
-          unsigned long                                 changed_points);
+          Change                                        change);
 
-    /// Factorisations since construction.
-    unsigned int
-    n_factorizations() const
-    {
-      return factorizations;
-    }
-
-    /// Solve with the stored factorisation: x = A_factored^{-1} b (the
+    /// x = A_factored^{-1} b with the kept factorisation (the
     /// preconditioner of the GMRES iteration).
     void
     vmult(dealii::TrilinosWrappers::MPI::Vector       &x,
@@ -76,14 +86,18 @@ namespace NitscheContact
 
   private:
     void
-    factorize(const dealii::TrilinosWrappers::SparseMatrix &A, bool symmetric);
+    factorize(const dealii::TrilinosWrappers::SparseMatrix &A);
+    /// drop the factorisation and the matrix copy
+    void
+    release();
 
-    Settings                                  settings;
-    dealii::TrilinosWrappers::SparseMatrix    factored; // copy of the matrix
-    std::unique_ptr<Epetra_LinearProblem>     problem;
-    std::unique_ptr<Amesos_BaseSolver>        direct;
-    bool                                      factored_symmetric = false;
-    unsigned int                              factorizations     = 0;
+    Settings                               settings;
+    dealii::TrilinosWrappers::SparseMatrix factored; // copy of the matrix
+    std::unique_ptr<Epetra_LinearProblem>  problem;
+    std::unique_ptr<Amesos_BaseSolver>     direct;
+    /// the last GMRES attempt did not converge: factorise on the next
+    /// Change::small too, then try again
+    bool gmres_failed = false;
   };
 } // namespace NitscheContact
 

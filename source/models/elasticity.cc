@@ -769,13 +769,15 @@ namespace NitscheContact
     unsigned int its = 0;
     if (linear_solver == "direct")
       {
-        // theta = 1 without friction: the Jacobian is the Hessian of the
-        // energy, symmetric (LDL^T in MUMPS)
+        // Without friction the matrix depends on U only through the
+        // contact status.
+        using Change = ReusedFactorization::Change;
         its = direct_solver.solve(system_matrix,
                                   increment,
                                   residual,
-                                  prm.theta == 1. && prm.friction == 0.,
-                                  last_changed);
+                                  last_changed > 0      ? Change::other :
+                                  prm.friction == 0. ? Change::none :
+                                                        Change::small);
       }
     else
       {

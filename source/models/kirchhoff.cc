@@ -123,7 +123,9 @@ namespace NitscheContact
         "Linear solver",
         "direct",
         Patterns::Selection("direct|multigrid"),
-        "'direct': factorise every Newton matrix ('Direct solver'). "
+        "'direct': sparse direct solver ('Direct solver'; a Newton matrix "
+        "whose contact status did not change reuses the last factorisation, "
+        "see 'Nonlinear solver/Reuse factorization'). "
         "'multigrid': conjugate gradients (GMRES when theta != 1 makes the "
         "Jacobian nonsymmetric) preconditioned by one geometric multigrid "
         "V-cycle per iteration: exact Hermite prolongation between the "
@@ -926,10 +928,14 @@ namespace NitscheContact
           mg_reference_iterations = linear_iterations;
       }
     else
-      // (frictionless: the matrix is the factorised one exactly when no
+      // (no friction: the matrix is the factorised one exactly when no
       // point changed status)
       linear_iterations = factorization->solve(
-        system_matrix, x, b, jacobian_is_symmetric(), status_settled ? 0 : 1);
+        system_matrix,
+        x,
+        b,
+        status_settled ? ReusedFactorization::Change::none :
+                         ReusedFactorization::Change::other);
 
     const double *xp = x.trilinos_vector()[0];
     std::copy(xp, xp + increment.size(), increment.begin());

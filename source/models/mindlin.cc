@@ -704,11 +704,16 @@ namespace NitscheContact
     const IndexSet owned = complete_index_set(dof_handler.n_dofs());
     TrilinosWrappers::MPI::Vector b(owned, comm), x(owned, comm);
     std::copy(residual.begin(), residual.end(), b.trilinos_vector()[0]);
-    // theta = 1 without friction: the Jacobian is the Hessian of the
-    // energy, symmetric (LDL^T in MUMPS).
-    const bool symmetric = (prm.theta == 1. && prm.friction == 0.);
-    const unsigned int its =
-      direct_solver.solve(system_matrix, x, b, symmetric, last_changed);
+    // Without friction the matrix depends on U only through the contact
+    // status.
+    using Change = ReusedFactorization::Change;
+    const unsigned int its = direct_solver.solve(
+      system_matrix,
+      x,
+      b,
+      last_changed > 0      ? Change::other :
+      prm.friction == 0. ? Change::none :
+                            Change::small);
     const double *xp = x.trilinos_vector()[0];
     std::copy(xp, xp + increment.size(), increment.begin());
     constraints.distribute(increment);
