@@ -303,9 +303,7 @@ namespace NitscheContact
     , mapping(1)
     , obstacle(common)
     , direct_solver(ReusedFactorization::Settings{"Amesos_Mumps",
-                                                  common.reuse_factorization,
-                                                  10,
-                                                  1e-12})
+                                                  common.reuse_factorization})
   {
     ph.enter_subsection("Elasticity");
     degree              = ph.get_integer("Polynomial degree");

@@ -188,9 +188,7 @@ namespace NitscheContact
       direct_solver = param.get("Direct solver");
       factorization = std::make_unique<ReusedFactorization>(
         ReusedFactorization::Settings{direct_solver,
-                                      common.reuse_factorization,
-                                      10,
-                                      1e-12});
+                                      common.reuse_factorization});
       use_multigrid = (param.get("Linear solver") == "multigrid");
       krylov_tolerance = param.get_double("Krylov tolerance");
       const std::string grad = dealii::Utilities::trim(param.get("Exact gradient"));

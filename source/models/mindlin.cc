@@ -142,9 +142,7 @@ namespace NitscheContact
                      settings.contact_quadrature,
                      "Mindlin/Contact quadrature points"))
     , direct_solver(ReusedFactorization::Settings{settings.linear_solver,
-                                                  common.reuse_factorization,
-                                                  10,
-                                                  1e-12})
+                                                  common.reuse_factorization})
     , obstacle(common)
   {
     if (Utilities::MPI::n_mpi_processes(comm) > 1)

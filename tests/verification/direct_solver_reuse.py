@@ -23,23 +23,15 @@ from kirchhoff_lib.plate import plate_prm
 args = parse_args()
 NO_REUSE = "subsection Nonlinear solver\n  set Reuse factorization = false\nend\n"
 KLU = "subsection Kirchhoff\n  set Direct solver = Amesos_Klu\nend\n"
+here = os.path.dirname(os.path.abspath(__file__))
+paper_mindlin = open(os.path.join(here, "..", "..", "parameters", "paper_mindlin.prm")).read()
 
 
 def mindlin_prm(theta, friction, extra=""):
-    return f"""set Model = mindlin
+    """The paper's Mindlin test on 8x8 and 16x16 cells, vertex contact points."""
+    return paper_mindlin + f"""
 subsection Geometry
-  set Length x = 10
-  set Length y = 10
-  set Thickness = 0.01
-  set Edge conditions = clamped, clamped, clamped, clamped
-  set Subdivisions = 8, 8
   set Number of cycles = 2
-end
-subsection Load
-  set Transverse load = -0.02
-end
-subsection Obstacle
-  set Level = -1
 end
 subsection Contact
   set Nitsche theta = {theta}
@@ -51,18 +43,12 @@ subsection Mindlin
   set Contact quadrature points = 2
 end
 subsection Nonlinear solver
-  set Tolerance = 1e-8
-  set Maximum iterations = 200
   set Print iterations = false
-end
-subsection Output
-  set Probe points = 5, 5; 2.5, 5; 1, 5
 end
 {extra}
 """
 
 
-here = os.path.dirname(os.path.abspath(__file__))
 sphere = open(os.path.join(here, "..", "runs", "elasticity_sphere.prm")).read()
 
 
