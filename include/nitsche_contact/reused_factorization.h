@@ -62,6 +62,18 @@ namespace NitscheContact
       other
     };
 
+    /// The Change of a Newton matrix of the contact models: `changed_points`
+    /// contact points changed status since the previous matrix; without
+    /// friction the matrix depends on the iterate only through the status.
+    static Change
+    change_of_newton_matrix(const unsigned long changed_points,
+                            const bool          friction)
+    {
+      return changed_points > 0 ? Change::other :
+             friction           ? Change::small :
+                                  Change::none;
+    }
+
     explicit ReusedFactorization(const Settings &settings);
     ~ReusedFactorization();
 

@@ -767,15 +767,12 @@ namespace NitscheContact
     unsigned int its = 0;
     if (linear_solver == "direct")
       {
-        // Without friction the matrix depends on U only through the
-        // contact status.
-        using Change = ReusedFactorization::Change;
-        its = direct_solver.solve(system_matrix,
-                                  increment,
-                                  residual,
-                                  last_changed > 0      ? Change::other :
-                                  prm.friction == 0. ? Change::none :
-                                                        Change::small);
+        its = direct_solver.solve(
+          system_matrix,
+          increment,
+          residual,
+          ReusedFactorization::change_of_newton_matrix(last_changed,
+                                                       prm.friction > 0.));
       }
     else
       {

@@ -926,14 +926,12 @@ namespace NitscheContact
           mg_reference_iterations = linear_iterations;
       }
     else
-      // (no friction: the matrix is the factorised one exactly when no
-      // point changed status)
       linear_iterations = factorization->solve(
         system_matrix,
         x,
         b,
-        status_settled ? ReusedFactorization::Change::none :
-                         ReusedFactorization::Change::other);
+        ReusedFactorization::change_of_newton_matrix(status_settled ? 0 : 1,
+                                                     false));
 
     const double *xp = x.trilinos_vector()[0];
     std::copy(xp, xp + increment.size(), increment.begin());

@@ -702,16 +702,12 @@ namespace NitscheContact
     const IndexSet owned = complete_index_set(dof_handler.n_dofs());
     TrilinosWrappers::MPI::Vector b(owned, comm), x(owned, comm);
     std::copy(residual.begin(), residual.end(), b.trilinos_vector()[0]);
-    // Without friction the matrix depends on U only through the contact
-    // status.
-    using Change = ReusedFactorization::Change;
     const unsigned int its = direct_solver.solve(
       system_matrix,
       x,
       b,
-      last_changed > 0      ? Change::other :
-      prm.friction == 0. ? Change::none :
-                            Change::small);
+      ReusedFactorization::change_of_newton_matrix(last_changed,
+                                                   prm.friction > 0.));
     const double *xp = x.trilinos_vector()[0];
     std::copy(xp, xp + increment.size(), increment.begin());
     constraints.distribute(increment);
