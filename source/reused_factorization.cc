@@ -6,7 +6,9 @@
 
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
+#include <Epetra_CrsMatrix.h>
 #include <Epetra_LinearProblem.h>
+#include <Epetra_Comm.h>
 
 #include <algorithm>
 #include <limits>
@@ -49,9 +51,63 @@ namespace NitscheContact
 
 
 
+  namespace
+  {
+    // The values of src into dst if both have the same rows, columns and
+    // entries (collective); false, and dst untouched, otherwise.
+    bool
+    copy_values_of_same_pattern(const Epetra_CrsMatrix &src,
+                                Epetra_CrsMatrix       &dst)
+    {
+      int same = src.RowMap().SameAs(dst.RowMap()) &&
+                 src.ColMap().SameAs(dst.ColMap()) &&
+                 src.NumMyRows() == dst.NumMyRows() &&
+                 src.NumMyNonzeros() == dst.NumMyNonzeros();
+      for (int row = 0; same && row < src.NumMyRows(); ++row)
+        {
+          int     n_src, n_dst;
+          double *v_src, *v_dst;
+          int    *c_src, *c_dst;
+          src.ExtractMyRowView(row, n_src, v_src, c_src);
+          dst.ExtractMyRowView(row, n_dst, v_dst, c_dst);
+          same = n_src == n_dst && std::equal(c_src, c_src + n_src, c_dst);
+        }
+      int all_same = 0;
+      src.Comm().MinAll(&same, &all_same, 1);
+      if (!all_same)
+        return false;
+      for (int row = 0; row < src.NumMyRows(); ++row)
+        {
+          int     n_src, n_dst;
+          double *v_src, *v_dst;
+          int    *c_src, *c_dst;
+          src.ExtractMyRowView(row, n_src, v_src, c_src);
+          dst.ExtractMyRowView(row, n_dst, v_dst, c_dst);
+          std::copy(v_src, v_src + n_src, v_dst);
+        }
+      return true;
+    }
+  } // namespace
+
+
+
   void
   ReusedFactorization::factorize(const TrilinosWrappers::SparseMatrix &A)
   {
+    // All Newton matrices of a mesh share one sparsity pattern: the
+    // ordering and symbolic analysis of the first factorisation serve the
+    // later ones and only the numerical factorisation is repeated (the
+    // analysis is about a third of a MUMPS factorisation on the paper's
+    // tests; doc/benchmarks.md).
+    if (direct && copy_values_of_same_pattern(A.trilinos_matrix(),
+                                              const_cast<Epetra_CrsMatrix &>(
+                                                factored.trilinos_matrix())))
+      {
+        if (direct->NumericFactorization() == 0)
+          return;
+        // (e.g. MUMPS' workspace estimate of the analysis too small for
+        // the pivoting these values need: analyse again below)
+      }
     release();
     // A copy: the caller reassembles its matrix in place, the factorisation
     // has to stay that of the copied one.

@@ -13,6 +13,9 @@
 //   residual is about the error; the plain residual of these systems can be
 //   1e-12 |b| with an error of order one in the soft bending modes), and a
 //   new factorisation if it does not converge within a few iterations.
+// Whenever it factorises, it keeps the ordering and symbolic analysis of the
+// first factorisation on the mesh (the sparsity pattern of a mesh's Newton
+// matrices is fixed) and repeats only the numerical factorisation.
 // Reusing the factors after status changes was measured and not kept:
 // GMRES then needs about two iterations per changed point, and its
 // round-off changed the Newton path of the paper's Mindlin test (9 -> 22
@@ -77,7 +80,8 @@ namespace NitscheContact
     explicit ReusedFactorization(const Settings &settings);
     ~ReusedFactorization();
 
-    /// Forget the factorisation (new mesh, new sparsity pattern).
+    /// Forget the factorisation and its analysis (call it for a new mesh,
+    /// i.e. a new sparsity pattern; a changed pattern is also detected).
     void
     clear();
 
