@@ -87,6 +87,10 @@ CASES = [
     ("factorisation reuse not a bool",
      "subsection Nonlinear solver\n  set Reuse factorization = sometimes\nend",
      ["Reuse factorization", "sometimes", "Bool"]),
+    ("in-plane refinement with local refinement",
+     "subsection Elasticity\n  set Refine through thickness = false\n"
+     "  set Refinement box = 0, 0, -1; 1, 1, 1\n  set Local refinement steps = 1\nend",
+     ["Elasticity/Refine through thickness", "'false'", "Local refinement steps", "= 1"]),
 ]
 
 # a regular file: a directory below it can never be created (even as root)

@@ -76,8 +76,18 @@ namespace NitscheContact
     static constexpr dealii::types::boundary_id contact_id = 4;
 
   private:
+    /// The mesh of a cycle on tria: the coarse box mesh ('Subdivisions',
+    /// with the in-plane ones times 2^cycle unless 'Refine through
+    /// thickness'), 'Initial refinement' global and the local refinements.
     void
-    make_grid();
+    make_grid(dealii::parallel::distributed::Triangulation<3> &tria,
+              unsigned int                                     cycle) const;
+    /// Replace the mesh by the one of 'cycle' with the in-plane
+    /// subdivisions doubled, and U by its interpolant there (exact: the
+    /// meshes are nested in plane and have the same layers). Needs the
+    /// uniform box mesh (no local refinement).
+    void
+    refine_in_plane(unsigned int cycle);
     void
     setup_dofs();
     void
@@ -101,6 +111,7 @@ namespace NitscheContact
     double       krylov_tolerance;
     std::vector<dealii::Point<3>> refinement_box;
     unsigned int local_refinement_steps;
+    bool         refine_through_thickness;
     unsigned int contact_quadrature_points;
     std::string  contact_rule_name;
     /// contact_rule(contact_rule_name, contact_quadrature_points)
