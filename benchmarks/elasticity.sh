@@ -7,8 +7,10 @@
 # ('plane', as paper_3d.prm) or refines every cell in all three directions
 # ('all': the layers double too). Prints DoFs, nonlinear iterations and
 # wall-clock seconds per phase (from summary.json, 'Print timings = true').
-# Usage:
-#   benchmarks/elasticity.sh [path/to/nitsche-contact] [cycles] [direct|amg] [ranks] [plane|all]
+# The sixth argument selects the 3x3 contact points per face: 'gauss'
+# (default, as paper_3d.prm) or 'lobatto' (the Q2 face nodes; fewer Newton
+# iterations, doc/benchmarks.md). Usage:
+#   benchmarks/elasticity.sh [path/to/nitsche-contact] [cycles] [direct|amg] [ranks] [plane|all] [gauss|lobatto]
 # The program must be built with CMAKE_BUILD_TYPE=Release. Nonlinear
 # tolerance 1e-6 (the round-off floor of this thin plate is ~1e-7).
 set -e
@@ -22,6 +24,11 @@ case "${5:-plane}" in
   all) through=true ;;
   *) echo "benchmarks/elasticity.sh: refinement must be 'plane' or 'all', not '$5'" >&2; exit 1 ;;
 esac
+rule=${6:-gauss}
+case "$rule" in
+  gauss|lobatto) ;;
+  *) echo "benchmarks/elasticity.sh: contact rule must be 'gauss' or 'lobatto', not '$rule'" >&2; exit 1 ;;
+esac
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 sed -e "s/^\( *set Number of cycles *=\).*/\1 $cycles/" \
@@ -32,18 +39,18 @@ sed -e "s/^\( *set Number of cycles *=\).*/\1 $cycles/" \
     -e "s/^\( *set Format *=\).*/\1 none/" \
     -e "s/^\( *set Print timings *=\).*/\1 true/" \
     -e "s/^\( *set Load applied as *=.*\)/\1\n  set Linear solver = $solver/" \
-    -e "s/^\( *set Refine through thickness *=\).*/\1 $through/" \
+    -e "s/^\( *set Refine through thickness *=\).*/\1 $through\n  set Contact quadrature rule = $rule/" \
     "$here/parameters/paper_3d.prm" > "$work/bench.prm"
 run=("$exe")
 if [ "$ranks" -gt 1 ]; then run=(mpirun -np "$ranks" "$exe"); fi
 start=$(date +%s.%N)
 "${run[@]}" "$work/bench.prm" > "$work/log" 2>&1 || { cat "$work/log"; exit 1; }
 end=$(date +%s.%N)
-python3 - "$work/out/summary.json" "$start" "$end" "$solver" "$ranks" <<'PY'
+python3 - "$work/out/summary.json" "$start" "$end" "$solver" "$ranks" "$rule" <<'PY'
 import json, sys
 s = json.load(open(sys.argv[1]))
-print("3D elasticity model (Q2), paper test, linear solver %s, %s MPI rank(s)"
-      % (sys.argv[4], sys.argv[5]))
+print("3D elasticity model (Q2), paper test, linear solver %s, %s MPI rank(s), "
+      "3x3 %s contact points per face" % (sys.argv[4], sys.argv[5], sys.argv[6]))
 print("%5s %9s %5s %8s %8s %8s %8s %8s %8s %9s" % ("cycle", "dofs", "its", "setup",
       "assembly", "solve", "postproc", "output", "total", "force"))
 acc = 0.0
