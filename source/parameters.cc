@@ -227,9 +227,10 @@ namespace NitscheContact
                         "Global refinements of the coarse mesh before the "
                         "first cycle.");
       prm.declare_entry("Number of cycles", "1", Patterns::Integer(1, 12),
-                        "Refinement cycles; each refines globally once and "
-                        "starts the nonlinear solver from the previous "
-                        "cycle's solution (nested iteration).");
+                        "Refinement cycles; each refines globally once "
+                        "(3D model: see 'Elasticity/Refine through "
+                        "thickness') and starts the nonlinear solver from "
+                        "the previous cycle's solution (nested iteration).");
     }
     prm.leave_subsection();
 

@@ -7,6 +7,7 @@
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
 #include <Epetra_CrsMatrix.h>
+#include <Epetra_Map.h>
 #include <Epetra_LinearProblem.h>
 #include <Epetra_Comm.h>
 
@@ -53,24 +54,34 @@ namespace NitscheContact
 
   namespace
   {
+    // Same locally owned rows (global indices) in the same order.
+    bool
+    same_elements(const Epetra_Map &a, const Epetra_Map &b)
+    {
+      return a.NumMyElements() == b.NumMyElements() &&
+             std::equal(a.MyGlobalElements(),
+                        a.MyGlobalElements() + a.NumMyElements(),
+                        b.MyGlobalElements());
+    }
+
     // The values of src into dst if both have the same rows, columns and
-    // entries (collective); false, and dst untouched, otherwise.
+    // entries on every rank (one collective reduction); false, and dst
+    // untouched, otherwise.
     bool
     copy_values_of_same_pattern(const Epetra_CrsMatrix &src,
                                 Epetra_CrsMatrix       &dst)
     {
-      int same = src.RowMap().SameAs(dst.RowMap()) &&
-                 src.ColMap().SameAs(dst.ColMap()) &&
-                 src.NumMyRows() == dst.NumMyRows() &&
+      int same = same_elements(src.RowMap(), dst.RowMap()) &&
+                 same_elements(src.ColMap(), dst.ColMap()) &&
                  src.NumMyNonzeros() == dst.NumMyNonzeros();
       for (int row = 0; same && row < src.NumMyRows(); ++row)
         {
-          int     n_src, n_dst;
+          int     n_src = 0, n_dst = 0;
           double *v_src, *v_dst;
           int    *c_src, *c_dst;
-          src.ExtractMyRowView(row, n_src, v_src, c_src);
-          dst.ExtractMyRowView(row, n_dst, v_dst, c_dst);
-          same = n_src == n_dst && std::equal(c_src, c_src + n_src, c_dst);
+          same = src.ExtractMyRowView(row, n_src, v_src, c_src) == 0 &&
+                 dst.ExtractMyRowView(row, n_dst, v_dst, c_dst) == 0 &&
+                 n_src == n_dst && std::equal(c_src, c_src + n_src, c_dst);
         }
       int all_same = 0;
       src.Comm().MinAll(&same, &all_same, 1);
@@ -78,7 +89,7 @@ namespace NitscheContact
         return false;
       for (int row = 0; row < src.NumMyRows(); ++row)
         {
-          int     n_src, n_dst;
+          int     n_src = 0, n_dst = 0;
           double *v_src, *v_dst;
           int    *c_src, *c_dst;
           src.ExtractMyRowView(row, n_src, v_src, c_src);
@@ -105,8 +116,8 @@ namespace NitscheContact
       {
         if (direct->NumericFactorization() == 0)
           return;
-        // (e.g. MUMPS' workspace estimate of the analysis too small for
-        // the pivoting these values need: analyse again below)
+        // (the error is known on every rank: Amesos reduces it) Start over
+        // with a new solver and analysis before giving up.
       }
     release();
     // A copy: the caller reassembles its matrix in place, the factorisation

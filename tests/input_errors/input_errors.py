@@ -88,6 +88,7 @@ CASES = [
      "subsection Nonlinear solver\n  set Reuse factorization = sometimes\nend",
      ["Reuse factorization", "sometimes", "Bool"]),
     ("in-plane refinement with local refinement",
+     "subsection Geometry\n  set Number of cycles = 2\nend\n"
      "subsection Elasticity\n  set Refine through thickness = false\n"
      "  set Refinement box = 0, 0, -1; 1, 1, 1\n  set Local refinement steps = 1\nend",
      ["Elasticity/Refine through thickness", "'false'", "Local refinement steps", "= 1"]),

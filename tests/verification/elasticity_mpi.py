@@ -23,6 +23,8 @@ text += "\nsubsection Geometry\n  set Number of cycles = 2\nend\n"
 one, _ = run(args, "paper_3d_np1", text, np=1)
 two, _ = run(args, "paper_3d_np2", text, np=2)
 check(len(one["cycles"]) == 2 and len(two["cycles"]) == 2, "two cycles on 1 and 2 ranks")
+check(one["cycles"][1]["n_dofs"] == 9801,
+      "second cycle refined in plane: 16x16x1 Q2 cells, 9801 DoFs (%d)" % one["cycles"][1]["n_dofs"])
 for a, b in zip(one["cycles"], two["cycles"]):
     c = "cycle %d: " % a["cycle"]
     print(c + "iterations: %d (1 rank), %d (2 ranks)" % (a["nonlinear_iterations"], b["nonlinear_iterations"]))

@@ -144,4 +144,45 @@ for degree in (1, 2):
                     check(c["extra"]["max_friction_ratio"] <= TOL,
                           tag + " |Lambda_t|/|Lambda_n| = %.2e == 0"
                           % c["extra"]["max_friction_ratio"])
+
+# In-plane refinement ('Refine through thickness = false'): the nested start
+# carried to the next mesh through the lattice of support points must be the
+# exact interpolant. The exact solution is linear, hence the same function on
+# both meshes: the first Newton correction of the refined cycle must vanish
+# (a wrong transfer gives |dU|_a/|U|_a of order one), and both cycles must
+# reproduce the exact solution. With 'Initial refinement = 1' (2 x 2 layers
+# through the thickness), Q1 and Q2, on 1 and 2 MPI ranks.
+import re
+edges, exact, constants, (a, b) = CASES["frictionless"]
+l2_size = math.sqrt((2 * a * a + b * b) / 3.0)
+for degree, np in ((1, 1), (2, 1), (2, 2)):
+    text = TEMPLATE % dict(edges=edges, E=E, nu=NU, q=-P, theta=1, gamma0=20, F=0.0,
+                           degree=degree, scheme="newton", exact=exact,
+                           constants=constants)
+    text += """
+subsection Geometry
+  set Initial refinement = 1
+  set Number of cycles = 2
+end
+subsection Elasticity
+  set Refine through thickness = false
+end
+subsection Nonlinear solver
+  set Print iterations = true
+end
+"""
+    tag = "in-plane refinement, Q%d, %d rank(s):" % (degree, np)
+    s, log = run(args, "patch_inplane_Q%d_np%d" % (degree, np), text, np=np)
+    cycles = s["cycles"]
+    check([c["n_dofs"] for c in cycles] == [3 * (3 * 2 * degree + 1) * (2 * 2 * degree + 1) * (2 * 2 * degree + 1),
+                                          3 * (6 * 2 * degree + 1) * (4 * 2 * degree + 1) * (2 * 2 * degree + 1)],
+          tag + " DoFs %s: 6x4x4 -> 12x8x4 cells" % [c["n_dofs"] for c in cycles])
+    for c in cycles:
+        check(c["converged"] and c["errors"]["L2"] / l2_size <= TOL,
+              tag + " cycle %d: relative L2 error %.2e <= %.0e"
+              % (c["cycle"], c["errors"]["L2"] / l2_size, TOL))
+    first = re.search(r"Cycle 1:.*?iteration +1:.*?\|dU\|_a/\|U\|_a ([0-9.e+-]+)", log, re.S)
+    du = float(first.group(1)) if first else float("inf")
+    check(du <= 1e-8, tag + " first Newton correction after the transfer "
+          "|dU|_a/|U|_a = %.1e <= 1e-8" % du)
 finish()
