@@ -64,9 +64,9 @@ namespace NitscheContact
                         b.MyGlobalElements());
     }
 
-    // The values of src into dst if both have the same rows, columns and
-    // entries on every rank (one collective reduction); false, and dst
-    // untouched, otherwise.
+    // Copy the values of src into dst and return true if both have the same
+    // rows, columns and entries on every rank (one collective reduction);
+    // otherwise false, with dst partly overwritten.
     bool
     copy_values_of_same_pattern(const Epetra_CrsMatrix &src,
                                 Epetra_CrsMatrix       &dst)
@@ -82,21 +82,12 @@ namespace NitscheContact
           same = src.ExtractMyRowView(row, n_src, v_src, c_src) == 0 &&
                  dst.ExtractMyRowView(row, n_dst, v_dst, c_dst) == 0 &&
                  n_src == n_dst && std::equal(c_src, c_src + n_src, c_dst);
+          if (same)
+            std::copy(v_src, v_src + n_src, v_dst);
         }
       int all_same = 0;
       src.Comm().MinAll(&same, &all_same, 1);
-      if (!all_same)
-        return false;
-      for (int row = 0; row < src.NumMyRows(); ++row)
-        {
-          int     n_src = 0, n_dst = 0;
-          double *v_src, *v_dst;
-          int    *c_src, *c_dst;
-          src.ExtractMyRowView(row, n_src, v_src, c_src);
-          dst.ExtractMyRowView(row, n_dst, v_dst, c_dst);
-          std::copy(v_src, v_src + n_src, v_dst);
-        }
-      return true;
+      return all_same != 0;
     }
   } // namespace
 

@@ -419,25 +419,24 @@ namespace NitscheContact
   }
 
   void
-  ElasticityModel::make_grid(parallel::distributed::Triangulation<3> &tria,
-                             const unsigned int cycle) const
+  ElasticityModel::make_grid(const unsigned int cycle)
   {
     const double       z0     = -0.5 * prm.thickness;
     const unsigned int factor = refine_through_thickness ? 1u : (1u << cycle);
     GridGenerator::subdivided_hyper_rectangle(
-      tria,
+      triangulation,
       {prm.subdivisions[0] * factor,
        prm.subdivisions[1] * factor,
        prm.subdivisions[2]},
       Point<3>(0., 0., z0),
       Point<3>(prm.length_x, prm.length_y, -z0),
       /*colorize: ids 0..5 = x-, x+, y-, y+, z-, z+*/ true);
-    tria.refine_global(prm.initial_refinement);
+    triangulation.refine_global(prm.initial_refinement);
     for (unsigned int step = 0; step < local_refinement_steps; ++step)
       {
         if (refinement_box.empty())
           break;
-        for (const auto &cell : tria.active_cell_iterators())
+        for (const auto &cell : triangulation.active_cell_iterators())
           if (cell->is_locally_owned())
             {
               const Point<3> c      = cell->center();
@@ -451,7 +450,7 @@ namespace NitscheContact
               if (inside)
                 cell->set_refine_flag();
             }
-        tria.execute_coarsening_and_refinement();
+        triangulation.execute_coarsening_and_refinement();
       }
   }
 
@@ -516,7 +515,7 @@ namespace NitscheContact
     Utilities::MPI::sum(values, comm, values);
 
     triangulation.clear();
-    make_grid(triangulation, cycle);
+    make_grid(cycle);
     setup_dofs();
     const Quadrature<3> support(fe.get_unit_support_points());
     FEValues<3>         new_points(mapping, fe, support, update_quadrature_points);
@@ -696,7 +695,7 @@ namespace NitscheContact
   {
     if (cycle == 0)
       {
-        make_grid(triangulation, 0);
+        make_grid(0);
         dof_handler.reinit(triangulation);
         setup_dofs();
         solution = 0.;

@@ -76,12 +76,12 @@ namespace NitscheContact
     static constexpr dealii::types::boundary_id contact_id = 4;
 
   private:
-    /// The mesh of a cycle on tria: the coarse box mesh ('Subdivisions',
-    /// with the in-plane ones times 2^cycle unless 'Refine through
-    /// thickness'), 'Initial refinement' global and the local refinements.
+    /// The mesh of a cycle, in the empty triangulation: the coarse box mesh
+    /// ('Subdivisions', with the in-plane ones times 2^cycle unless 'Refine
+    /// through thickness'), 'Initial refinement' global and the local
+    /// refinements.
     void
-    make_grid(dealii::parallel::distributed::Triangulation<3> &tria,
-              unsigned int                                     cycle) const;
+    make_grid(unsigned int cycle);
     /// Replace the mesh by the one of 'cycle' with the in-plane
     /// subdivisions doubled, and U by its interpolant there (exact: the
     /// meshes are nested in plane and have the same layers). Needs the
