@@ -29,6 +29,7 @@ the solution is not exact, a wrong traction or a wrong symmetry condition
 shows up as an O(1) relative error here.
 """
 import math
+import re
 from common import parse_args, run, check, finish
 
 args = parse_args()
@@ -152,7 +153,6 @@ for degree in (1, 2):
 # (a wrong transfer gives |dU|_a/|U|_a of order one), and both cycles must
 # reproduce the exact solution. With 'Initial refinement = 1' (2 x 2 layers
 # through the thickness), Q1 and Q2, on 1 and 2 MPI ranks.
-import re
 edges, exact, constants, (a, b) = CASES["frictionless"]
 l2_size = math.sqrt((2 * a * a + b * b) / 3.0)
 for degree, np in ((1, 1), (2, 1), (2, 2)):
