@@ -160,6 +160,10 @@ namespace NitscheContact
             // J is then quadratic along dU and phi'(1) = 0 up to round-off).
             if (s1 > 0.1 * std::abs(slope0))
               {
+                // phi' without assembling, where the model offers it
+                timer.restart();
+                const bool fast = model.prepare_line_search();
+                t.assembly += timer.wall_time();
                 double a = 0., fa = slope0, b = 1., fb = s1;
                 for (unsigned int it = 0; it < 40; ++it)
                   {
@@ -170,10 +174,16 @@ namespace NitscheContact
                     step = (a * fb - b * fa) / (fb - fa);
                     if (!(step > a + 0.25 * (b - a) && step < b - 0.25 * (b - a)))
                       step = 0.5 * (a + b);
-                    model.apply_increment(step);
+                    double fs;
                     timer.restart();
-                    model.assemble(prm.scheme, false);
-                    const double fs = model.energy_slope();
+                    if (fast)
+                      fs = model.line_slope(step);
+                    else
+                      {
+                        model.apply_increment(step);
+                        model.assemble(prm.scheme, false);
+                        fs = model.energy_slope();
+                      }
                     t.assembly += timer.wall_time();
                     if (std::abs(fs) <= 0.1 * std::abs(slope0) ||
                         b - a <= 1e-10)
@@ -182,6 +192,14 @@ namespace NitscheContact
                       a = step, fa = fs;
                     else
                       b = step, fb = fs;
+                  }
+                if (fast)
+                  {
+                    // the residual and status at the accepted step
+                    model.apply_increment(step);
+                    timer.restart();
+                    model.assemble(prm.scheme, false);
+                    t.assembly += timer.wall_time();
                   }
               }
           }

@@ -127,6 +127,27 @@ namespace NitscheContact
       return std::numeric_limits<double>::quiet_NaN();
     }
 
+    /// Optional fast path of the exact line search: prepare the evaluation
+    /// of phi'(t) = R(U_base + t dU).dU for any t in [0, 1] without
+    /// assembling (U_base and dU as in apply_increment()); returns false if
+    /// the model does not offer it, and the driver then evaluates phi' by
+    /// apply_increment() and assemble(). Only called when energy_slope()
+    /// is finite.
+    virtual bool
+    prepare_line_search()
+    {
+      return false;
+    }
+
+    /// phi'(t) after a successful prepare_line_search(); it must equal
+    /// energy_slope() after apply_increment(t) and assemble() up to
+    /// round-off.
+    virtual double
+    line_slope(double /*t*/) const
+    {
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+
     /// Energy norms (bulk elastic energy, no contact terms) of the last
     /// increment dU and of the current iterate U.
     virtual double

@@ -4,6 +4,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_index_access.h>
 #include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparse_direct.h>
 
 #include <nitsche_contact/models/hermite_multigrid.h>
 
@@ -171,21 +172,16 @@ namespace NitscheContact
 
 
 
-  /// Sparse direct solve (KLU, double precision) on the coarsest level.
+  /// Sparse direct solve (UMFPACK, double precision) on the coarsest level.
   class HermiteMultigrid::CoarseSolver : public MGCoarseGridBase<LevelVector>
   {
   public:
-    CoarseSolver()
-      : control(1, 0.)
-      , solver(control, TrilinosWrappers::SolverDirect::AdditionalData(
-                          false, "Amesos_Klu"))
-    {}
     void
-    reinit(const MatrixType &A)
+    reinit(const SparseMatrix<double> &A)
     {
-      solver.initialize(A);
-      x.reinit(A.locally_owned_range_indices(), A.get_mpi_communicator());
-      b.reinit(x);
+      solver.factorize(A);
+      x.reinit(A.m());
+      b.reinit(A.m());
     }
     void
     operator()(const unsigned int,
@@ -193,14 +189,13 @@ namespace NitscheContact
                const LevelVector &src) const override
     {
       std::copy(src.begin(), src.end(), b.begin());
-      solver.solve(x, b);
+      solver.vmult(x, b);
       std::copy(x.begin(), x.end(), dst.begin());
     }
 
   private:
-    SolverControl                          control;
-    mutable TrilinosWrappers::SolverDirect solver;
-    mutable VectorType                     x, b;
+    SparseDirectUMFPACK    solver;
+    mutable Vector<double> x, b;
   };
 
 
@@ -208,7 +203,7 @@ namespace NitscheContact
   void
   HermiteMultigrid::copy_matrix(const MatrixType &A,
                                 FloatMatrix      &F,
-                                const bool        new_pattern)
+                                const bool        new_offsets)
   {
     const Epetra_CrsMatrix &E      = A.trilinos_matrix();
     const int               n_rows = E.NumMyRows();
@@ -217,39 +212,37 @@ namespace NitscheContact
     int     n;
     double *values;
     int    *indices;
-    if (new_pattern)
+    if (new_offsets)
       {
-        std::vector<unsigned int> lengths(n_rows);
-        for (int r = 0; r < n_rows; ++r)
-          lengths[r] = E.NumMyEntries(r) + 1;
-        F.matrix.clear();
-        F.pattern.reinit(A.m(), A.n(), lengths);
-        std::vector<types::global_dof_index> cols;
-        for (int r = 0; r < n_rows; ++r)
-          {
-            E.ExtractMyRowView(r, n, values, indices);
-            cols.resize(n);
-            for (int k = 0; k < n; ++k)
-              cols[k] = TrilinosWrappers::global_column_index(E, indices[k]);
-            F.pattern.add_entries(TrilinosWrappers::global_row_index(E, r),
-                                  cols.begin(),
-                                  cols.end());
-          }
-        F.pattern.compress();
-        F.matrix.reinit(F.pattern);
+        // place of every column of a row within the row of F, by a scatter
+        // into an array indexed by column
+        std::vector<unsigned int>            place(A.n());
+        std::vector<types::global_dof_index> mark(A.n(),
+                                                  numbers::invalid_dof_index);
         F.offset.clear();
         F.offset.reserve(E.NumMyNonzeros());
         for (int r = 0; r < n_rows; ++r)
           {
             const auto row = TrilinosWrappers::global_row_index(E, r);
-            E.ExtractMyRowView(r, n, values, indices);
             const auto diag = F.pattern(row, row);
+            AssertThrow(diag != SparsityPattern::invalid_entry,
+                        ExcInternalError());
+            for (auto it = F.pattern.begin(row); it != F.pattern.end(row);
+                 ++it)
+              {
+                place[it->column()] = it->global_index() - diag;
+                mark[it->column()]  = row;
+              }
+            E.ExtractMyRowView(r, n, values, indices);
             for (int k = 0; k < n; ++k)
-              F.offset.push_back(
-                F.pattern(row,
-                          TrilinosWrappers::global_column_index(E,
-                                                                indices[k])) -
-                diag);
+              {
+                const auto col = TrilinosWrappers::global_column_index(E, indices[k]);
+                AssertThrow(mark[col] == types::global_dof_index(row),
+                            ExcMessage("HermiteMultigrid: an entry of the "
+                                       "matrix is not in the pattern given "
+                                       "to setup()"));
+                F.offset.push_back(place[col]);
+              }
           }
       }
     AssertThrow(F.offset.size() == std::size_t(E.NumMyNonzeros()),
@@ -288,16 +281,16 @@ namespace NitscheContact
     const Tensor<1, 2>                         &h,
     const std::vector<types::global_dof_index> &vertex_dofs,
     const std::vector<bool>                    &constrained,
+    const DynamicSparsityPattern               &fine_pattern,
     const unsigned int                          max_coarse_dofs)
   {
     multigrid.reset();
-    prolongation.clear();
-    coarse_matrices.clear();
     fine_matrix        = nullptr;
     fine_pattern_ready = false;
+    fine_vertex_dofs   = vertex_dofs;
 
     // The level sizes, coarsest first.
-    unsigned int L = 0;
+    L   = 0;
     nx0 = nx, ny0 = ny;
     while (nx0 % 2 == 0 && ny0 % 2 == 0 && nx0 >= 4 && ny0 >= 4 &&
            4 * (nx0 + 1) * (ny0 + 1) > max_coarse_dofs)
@@ -310,26 +303,42 @@ namespace NitscheContact
         complete_index_set(l == L ? n_fine :
                                     4 * ((nx0 << l) + 1) * ((ny0 << l) + 1));
 
-    // Dof index and constraint flag of dof k at vertex (i, j) of level l:
-    // structured numbering below the finest level; the constraint pattern
-    // of a vertex is the one of the same vertex on the finest level.
+    // Dof index of dof k at vertex (i, j) of level l: structured numbering
+    // below the finest level. The constraint pattern of a vertex is the one
+    // of the same vertex on the finest level.
     const auto index = [&](unsigned int l, unsigned int i, unsigned int j,
                            unsigned int k) -> types::global_dof_index {
       const unsigned int n = (nx0 << l) + 1;
       return (l == L) ? vertex_dofs[4 * (i + (nx + 1) * j) + k] :
                         4 * (i + n * j) + k;
     };
+    level_constrained.resize(L + 1);
+    for (unsigned int l = 0; l <= L; ++l)
+      {
+        const unsigned int n = (nx0 << l) + 1, m = (ny0 << l) + 1,
+                           s = L - l;
+        level_constrained[l].assign(4 * n * m, false);
+        for (unsigned int j = 0; j < m; ++j)
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int k = 0; k < 4; ++k)
+              level_constrained[l][4 * (i + n * j) + k] = constrained
+                [vertex_dofs[4 * ((i << s) + (nx + 1) * (j << s)) + k]];
+      }
     const auto is_constrained = [&](unsigned int l, unsigned int i,
                                     unsigned int j, unsigned int k) {
-      const unsigned int s = L - l;
       return bool(
-        constrained[vertex_dofs[4 * ((i << s) + (nx + 1) * (j << s)) + k]]);
+        level_constrained[l][4 * (i + ((nx0 << l) + 1) * j) + k]);
     };
 
     // (sized once: a SparseMatrix keeps a pointer to its pattern, so the
     // FloatMatrix objects must not move)
     prolong_f  = std::vector<FloatMatrix>(L);
     restrict_f = std::vector<FloatMatrix>(L);
+    levels     = std::vector<FloatMatrix>(L + 1);
+    levels[L].pattern.copy_from(fine_pattern);
+    levels[L].matrix.reinit(levels[L].pattern);
+    coarse_matrix.clear();
+    local_prolongation.resize(L);
     std::vector<double>              values;
     std::vector<Tensor<1, 2>>        grads;
     std::vector<Tensor<2, 2>>        hessians;
@@ -341,8 +350,24 @@ namespace NitscheContact
         hc[0] = h[0] * (1u << (L - l));
         hc[1] = h[1] * (1u << (L - l));
 
-        // Visit every entry (fine dof, coarse dof, value) of P_l; called
-        // once for the sparsity pattern and once for the values.
+        // The Hermite basis of a coarse cell and its derivatives at the
+        // nine points (0, 1/2, 1)^2 where fine vertices lie.
+        std::array<std::array<std::array<double, 16>, 4>, 9> at_point;
+        for (unsigned int p = 0; p < 9; ++p)
+          {
+            fe.evaluate(Point<2>(0.5 * (p % 3), 0.5 * (p / 3)), hc, values,
+                        grads, hessians);
+            for (unsigned int m = 0; m < 16; ++m)
+              {
+                at_point[p][0][m] = values[m];
+                at_point[p][1][m] = grads[m][0];
+                at_point[p][2][m] = grads[m][1];
+                at_point[p][3][m] = hessians[m][0][1];
+              }
+          }
+        // The global prolongation P_l of the V-cycle. Visit every entry
+        // (fine dof, coarse dof, value); called once for the sparsity
+        // patterns and once for the values.
         const auto visit = [&](const auto &entry) {
           for (unsigned int J = 0; J <= nfy; ++J)
             for (unsigned int I = 0; I <= nfx; ++I)
@@ -355,8 +380,7 @@ namespace NitscheContact
                   }
                 const unsigned int ic = std::min(I / 2, ncx - 1);
                 const unsigned int jc = std::min(J / 2, ncy - 1);
-                const Point<2> unit(0.5 * (I - 2. * ic), 0.5 * (J - 2. * jc));
-                fe.evaluate(unit, hc, values, grads, hessians);
+                const auto &basis = at_point[(I - 2 * ic) + 3 * (J - 2 * jc)];
                 for (unsigned int k = 0; k < 4; ++k)
                   {
                     if (is_constrained(l + 1, I, J, k))
@@ -367,35 +391,25 @@ namespace NitscheContact
                         const unsigned int vi = ic + v % 2, vj = jc + v / 2;
                         if (is_constrained(l, vi, vj, km))
                           continue;
-                        const double a = (k == 0) ? values[m] :
-                                         (k == 1) ? grads[m][0] :
-                                         (k == 2) ? grads[m][1] :
-                                                    hessians[m][0][1];
+                        const double a = basis[k][m];
                         if (std::abs(a) > 1e-12)
                           entry(index(l + 1, I, J, k), index(l, vi, vj, km), a);
                       }
                   }
               }
         };
+        FloatMatrix           &pf = prolong_f[l], &rf = restrict_f[l];
         DynamicSparsityPattern dsp(level_sets[l + 1].size(),
                                    level_sets[l].size());
-        visit([&](types::global_dof_index i, types::global_dof_index j,
-                  double) { dsp.add(i, j); });
-        auto P = std::make_unique<MatrixType>();
-        P->reinit(level_sets[l + 1], level_sets[l], dsp, comm);
-        visit([&](types::global_dof_index i, types::global_dof_index j,
-                  double a) { P->set(i, j, a); });
-        P->compress(VectorOperation::insert);
-        prolongation.push_back(std::move(P));
-
-        // single-precision copies of P_l and P_l^T for the V-cycle
-        FloatMatrix &pf = prolong_f[l], &rf = restrict_f[l];
-        pf.pattern.copy_from(dsp);
-        pf.matrix.reinit(pf.pattern);
         DynamicSparsityPattern dspt(level_sets[l].size(),
                                     level_sets[l + 1].size());
         visit([&](types::global_dof_index i, types::global_dof_index j,
-                  double) { dspt.add(j, i); });
+                  double) {
+          dsp.add(i, j);
+          dspt.add(j, i);
+        });
+        pf.pattern.copy_from(dsp);
+        pf.matrix.reinit(pf.pattern);
         rf.pattern.copy_from(dspt);
         rf.matrix.reinit(rf.pattern);
         visit([&](types::global_dof_index i, types::global_dof_index j,
@@ -403,12 +417,42 @@ namespace NitscheContact
           pf.matrix.set(i, j, static_cast<float>(a));
           rf.matrix.set(j, i, static_cast<float>(a));
         });
-      }
-    coarse_matrices.resize(L);
-    for (auto &m : coarse_matrices)
-      m = std::make_unique<MatrixType>();
 
-    levels         = std::vector<FloatMatrix>(L + 1);
+        // The same prolongation restricted to one child cell, for the
+        // Galerkin products cell by cell: dof 4 v + k of the child in
+        // position pos from the 16 dofs of the parent.
+        for (unsigned int pos = 0; pos < 4; ++pos)
+          for (unsigned int v = 0; v < 4; ++v)
+            {
+              const Point<2> unit(0.5 * (pos % 2 + v % 2),
+                                  0.5 * (pos / 2 + v / 2));
+              fe.evaluate(unit, hc, values, grads, hessians);
+              for (unsigned int k = 0; k < 4; ++k)
+                for (unsigned int m = 0; m < 16; ++m)
+                  local_prolongation[l][pos][16 * (4 * v + k) + m] =
+                    (k == 0) ? values[m] :
+                    (k == 1) ? grads[m][0] :
+                    (k == 2) ? grads[m][1] :
+                               hessians[m][0][1];
+            }
+
+        // Level matrix pattern: all couplings within a cell.
+        DynamicSparsityPattern lsp(level_sets[l].size());
+        types::global_dof_index g[16];
+        for (unsigned int jc = 0; jc < ncy; ++jc)
+          for (unsigned int ic = 0; ic < ncx; ++ic)
+            {
+              for (unsigned int a = 0; a < 16; ++a)
+                g[a] = index(l, ic + (a / 4) % 2, jc + a / 8, a % 4);
+              for (unsigned int a = 0; a < 16; ++a)
+                lsp.add_entries(g[a], g, g + 16, true);
+            }
+        levels[l].pattern.copy_from(lsp);
+        levels[l].matrix.reinit(levels[l].pattern);
+      }
+    if (L > 0)
+      coarse_matrix.reinit(levels[0].pattern);
+
     transfer       = std::make_unique<Transfer>(prolong_f, restrict_f);
     level_matrices = std::make_unique<LevelMatrices>(levels);
     smoother       = std::make_unique<Smoother>();
@@ -418,29 +462,144 @@ namespace NitscheContact
 
 
   void
-  HermiteMultigrid::reinit_matrix(const MatrixType &A, const bool galerkin)
+  HermiteMultigrid::remove_constrained(const unsigned int l,
+                                       const unsigned int cell,
+                                       double            *m) const
   {
-    Assert(transfer, ExcMessage("HermiteMultigrid::setup() first"));
-    fine_matrix          = &A;
-    const unsigned int L = prolongation.size();
-    copy_matrix(A, levels[L], !fine_pattern_ready);
-    fine_pattern_ready = true;
-    if (galerkin || !multigrid || L == 0)
+    const unsigned int n  = (nx0 << l) + 1;
+    const unsigned int ic = cell % (n - 1), jc = cell / (n - 1);
+    for (unsigned int a = 0; a < 16; ++a)
+      if (level_constrained[l][4 * (ic + (a / 4) % 2 + n * (jc + a / 8)) +
+                               a % 4])
+        for (unsigned int b = 0; b < 16; ++b)
+          m[16 * a + b] = m[16 * b + a] = 0.;
+  }
+
+
+
+  void
+  HermiteMultigrid::restrict_cells(
+    const unsigned int               l,
+    const std::vector<unsigned int> &child_cells,
+    const std::vector<double>       &child_matrices,
+    std::vector<unsigned int>       &parent_cells,
+    std::vector<double>             &parent_matrices) const
+  {
+    const unsigned int ncx = nx0 << l, ncy = ny0 << l, nfx = 2 * ncx;
+    std::vector<int>   slot(std::size_t(ncx) * ncy, -1);
+    parent_cells.clear();
+    parent_matrices.clear();
+    double t[256];
+    for (std::size_t e = 0; e < child_cells.size(); ++e)
       {
-        MatrixType AP;
+        const unsigned int child = child_cells[e];
+        const unsigned int I = child % nfx, J = child / nfx;
+        const unsigned int parent = I / 2 + ncx * (J / 2);
+        const unsigned int pos    = I % 2 + 2 * (J % 2);
+        if (slot[parent] < 0)
+          {
+            slot[parent] = parent_cells.size();
+            parent_cells.push_back(parent);
+            parent_matrices.resize(parent_matrices.size() + 256, 0.);
+          }
+        const double *d = &child_matrices[256 * e];
+        const double *P = local_prolongation[l][pos].data();
+        // t = M P, then parent += P^T t
+        for (unsigned int i = 0; i < 16; ++i)
+          for (unsigned int m = 0; m < 16; ++m)
+            {
+              double sum = 0.;
+              for (unsigned int j = 0; j < 16; ++j)
+                sum += d[16 * i + j] * P[16 * j + m];
+              t[16 * i + m] = sum;
+            }
+        double *out = &parent_matrices[256 * slot[parent]];
+        for (unsigned int a = 0; a < 16; ++a)
+          for (unsigned int m = 0; m < 16; ++m)
+            {
+              double sum = 0.;
+              for (unsigned int i = 0; i < 16; ++i)
+                sum += P[16 * i + a] * t[16 * i + m];
+              out[16 * a + m] += sum;
+            }
+      }
+    // The global prolongation has no entries in the columns of constrained
+    // coarse dofs but the identity onto a constrained fine dof, whose rows
+    // and columns are zero here.
+    for (std::size_t e = 0; e < parent_cells.size(); ++e)
+      remove_constrained(l, parent_cells[e], &parent_matrices[256 * e]);
+  }
+
+
+
+  void
+  HermiteMultigrid::add_cells(const unsigned int               l,
+                              const std::vector<unsigned int> &cells,
+                              const std::vector<double>       &matrices)
+  {
+    const unsigned int ncx = nx0 << l;
+    types::global_dof_index g[16];
+    for (std::size_t e = 0; e < cells.size(); ++e)
+      {
+        const unsigned int ic = cells[e] % ncx, jc = cells[e] / ncx;
+        // the local order 4 v + k is the order of the global indices
+        for (unsigned int a = 0; a < 16; ++a)
+          g[a] = 4 * (ic + (a / 4) % 2 + (ncx + 1) * (jc + a / 8)) + a % 4;
+        const double *m = &matrices[256 * e];
+        for (unsigned int a = 0; a < 16; ++a)
+          {
+            levels[l].matrix.add(g[a], 16, g, m + 16 * a, true, true);
+            if (l == 0)
+              coarse_matrix.add(g[a], 16, g, m + 16 * a, true, true);
+          }
+      }
+  }
+
+
+
+  void
+  HermiteMultigrid::add_and_finish(const MatrixType                &A,
+                                   const std::vector<unsigned int> &cells,
+                                   const std::vector<double>       &matrices)
+  {
+    if (L > 0)
+      {
+        std::vector<unsigned int> children = cells, parents;
+        std::vector<double>       child_matrices = matrices, parent_matrices;
+        for (unsigned int e = 0; e < children.size(); ++e)
+          remove_constrained(L, children[e], &child_matrices[256 * e]);
         for (unsigned int l = L; l-- > 0;)
           {
-            const MatrixType &fine =
-              (l + 1 == L) ? A : *coarse_matrices[l + 1];
-            fine.mmult(AP, *prolongation[l]);
-            prolongation[l]->Tmmult(*coarse_matrices[l], AP);
-            copy_matrix(*coarse_matrices[l], levels[l], true);
+            restrict_cells(l, children, child_matrices, parents,
+                           parent_matrices);
+            add_cells(l, parents, parent_matrices);
+            children.swap(parents);
+            child_matrices.swap(parent_matrices);
           }
-        smoother->reinit(*level_matrices, 1, L + 1);
-        coarse->reinit(L == 0 ? A : *coarse_matrices[0]);
       }
-    else
-      smoother->reinit(*level_matrices, L, L + 1);
+    fine_matrix = &A;
+    copy_matrix(A, levels[L], !fine_pattern_ready);
+    fine_pattern_ready = true;
+    if (L == 0)
+      {
+        // one level: the coarse solver factorises A itself
+        const Epetra_CrsMatrix &E = A.trilinos_matrix();
+        coarse_matrix.reinit(levels[0].pattern);
+        int     n;
+        double *values;
+        int    *indices;
+        for (int r = 0; r < E.NumMyRows(); ++r)
+          {
+            E.ExtractMyRowView(r, n, values, indices);
+            for (int k = 0; k < n; ++k)
+              coarse_matrix.set(TrilinosWrappers::global_row_index(E, r),
+                                TrilinosWrappers::global_column_index(
+                                  E, indices[k]),
+                                values[k]);
+          }
+      }
+    smoother->reinit(*level_matrices, 1, L + 1);
+    coarse->reinit(coarse_matrix);
     if (!multigrid)
       multigrid = std::make_unique<Multigrid<LevelVector>>(
         *level_matrices, *coarse, *transfer, *smoother, *smoother, 0, L);
@@ -449,9 +608,181 @@ namespace NitscheContact
 
 
   void
+  HermiteMultigrid::reinit(const MatrixType                &A,
+                           const FullMatrix<double>        &cell_matrix,
+                           const std::vector<unsigned int> &cells,
+                           const std::vector<double>       &cell_matrices)
+  {
+    Assert(transfer, ExcMessage("HermiteMultigrid::setup() first"));
+    AssertDimension(cell_matrices.size(), 256 * cells.size());
+    AssertThrow(cell_matrix.m() == 16 && cell_matrix.n() == 16,
+                ExcDimensionMismatch(cell_matrix.m(), 16));
+    for (unsigned int l = 0; l < L; ++l)
+      levels[l].matrix = 0.;
+    if (L > 0)
+      coarse_matrix = 0.;
+
+    // The part that is the same on every cell. A cell without constrained
+    // dofs has the same restricted matrix ('interior') as every other such
+    // cell of its level if its four children have; the cells with
+    // constrained dofs, and the parents of such cells, are restricted one
+    // by one ('boundary').
+    std::vector<double> interior(256), restricted(256);
+    for (unsigned int a = 0; a < 16; ++a)
+      for (unsigned int b = 0; b < 16; ++b)
+        interior[16 * a + b] = cell_matrix(a, b);
+    std::vector<unsigned int> boundary, parents;
+    std::vector<double>       boundary_matrices, parent_matrices;
+    for (unsigned int c = 0; c < (nx0 << L) * (ny0 << L); ++c)
+      {
+        restricted = interior;
+        remove_constrained(L, c, restricted.data());
+        if (restricted != interior)
+          {
+            boundary.push_back(c);
+            boundary_matrices.insert(boundary_matrices.end(),
+                                     restricted.begin(),
+                                     restricted.end());
+          }
+      }
+    for (unsigned int l = L; l-- > 0;)
+      {
+        const unsigned int ncx = nx0 << l, ncy = ny0 << l, nfx = 2 * ncx;
+        // boundary children and their interior siblings
+        std::vector<char> listed_child(std::size_t(nfx) * 2 * ncy, 0);
+        std::vector<char> listed_parent(std::size_t(ncx) * ncy, 0);
+        for (const unsigned int c : boundary)
+          {
+            listed_child[c] = 1;
+            listed_parent[(c % nfx) / 2 + ncx * ((c / nfx) / 2)] = 1;
+          }
+        for (unsigned int p = 0; p < ncx * ncy; ++p)
+          if (listed_parent[p])
+            for (unsigned int pos = 0; pos < 4; ++pos)
+              {
+                const unsigned int child = 2 * (p % ncx) + pos % 2 +
+                                           nfx * (2 * (p / ncx) + pos / 2);
+                if (!listed_child[child])
+                  {
+                    boundary.push_back(child);
+                    boundary_matrices.insert(boundary_matrices.end(),
+                                             interior.begin(),
+                                             interior.end());
+                  }
+              }
+        restrict_cells(l, boundary, boundary_matrices, parents,
+                       parent_matrices);
+        // the interior matrix of level l: the four children of an interior
+        // cell restricted to it (no constrained dofs to remove)
+        std::vector<unsigned int> four_children(4), one_parent;
+        std::vector<double>       four_matrices;
+        for (unsigned int pos = 0; pos < 4; ++pos)
+          {
+            four_children[pos] = pos % 2 + nfx * (pos / 2);
+            four_matrices.insert(four_matrices.end(), interior.begin(),
+                                 interior.end());
+          }
+        {
+          // restrict_cells() would remove the constrained dofs of the
+          // corner cell it is applied to; compute on a copy of the
+          // constraint flags without any
+          std::vector<bool> saved(level_constrained[l].size(), false);
+          level_constrained[l].swap(saved);
+          restrict_cells(l, four_children, four_matrices, one_parent,
+                         restricted);
+          level_constrained[l].swap(saved);
+        }
+        interior = restricted;
+        add_cells(l, parents, parent_matrices);
+        std::vector<unsigned int> others;
+        std::vector<double>       other_matrices;
+        for (unsigned int p = 0; p < ncx * ncy; ++p)
+          if (!listed_parent[p])
+            {
+              // (all four children are interior cells, so the parent has no
+              // constrained dofs either: checked)
+              restricted = interior;
+              remove_constrained(l, p, restricted.data());
+              AssertThrow(restricted == interior, ExcInternalError());
+              others.push_back(p);
+              other_matrices.insert(other_matrices.end(), interior.begin(),
+                                    interior.end());
+            }
+        add_cells(l, others, other_matrices);
+        boundary.swap(parents);
+        boundary_matrices.swap(parent_matrices);
+      }
+
+    // Constrained coarse dofs: the diagonal entry of the same dof of the
+    // finest level.
+    for (unsigned int l = 0; l < L; ++l)
+      {
+        const unsigned int n = (nx0 << l) + 1, m = (ny0 << l) + 1,
+                           s = L - l;
+        const unsigned int nf = (nx0 << L) + 1;
+        for (unsigned int j = 0; j < m; ++j)
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int k = 0; k < 4; ++k)
+              if (level_constrained[l][4 * (i + n * j) + k])
+                {
+                  const double d = A.diag_element(
+                    fine_vertex_dofs[4 * ((i << s) + nf * (j << s)) + k]);
+                  const types::global_dof_index g = 4 * (i + n * j) + k;
+                  levels[l].matrix.add(g, g, d);
+                  if (l == 0)
+                    coarse_matrix.add(g, g, d);
+                }
+      }
+
+    add_and_finish(A, cells, cell_matrices);
+  }
+
+
+
+  void
+  HermiteMultigrid::update(const MatrixType                &A,
+                           const std::vector<unsigned int> &cells,
+                           const std::vector<double>       &differences)
+  {
+    Assert(multigrid, ExcMessage("HermiteMultigrid::reinit() first"));
+    AssertDimension(differences.size(), 256 * cells.size());
+    add_and_finish(A, cells, differences);
+  }
+
+
+
+  double
+  HermiteMultigrid::galerkin_defect() const
+  {
+    Assert(multigrid, ExcMessage("HermiteMultigrid::reinit() first"));
+    double defect = 0.;
+    for (unsigned int l = 0; l < L; ++l)
+      {
+        const unsigned int n = levels[l].matrix.m();
+        LevelVector        x(n), y(n), z(n), p(levels[l + 1].matrix.m()),
+          q(levels[l + 1].matrix.m());
+        // a fixed pseudo-random vector (linear congruential)
+        std::uint64_t state = 12345 + l;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            state = state * 6364136223846793005ull + 1442695040888963407ull;
+            x[i]  = float((state >> 11) * (1. / 9007199254740992.) - 0.5);
+          }
+        levels[l].matrix.vmult(y, x);
+        prolong_f[l].matrix.vmult(p, x);
+        levels[l + 1].matrix.vmult(q, p);
+        restrict_f[l].matrix.vmult(z, q);
+        z -= y;
+        defect = std::max(defect, double(z.l2_norm() / y.l2_norm()));
+      }
+    return defect;
+  }
+
+
+
+  void
   HermiteMultigrid::vmult(VectorType &dst, const VectorType &src) const
   {
-    const unsigned int L = prolongation.size();
     if (multigrid->defect.max_level() != L)
       multigrid->defect.resize(0, L);
     for (unsigned int l = 0; l < L; ++l)

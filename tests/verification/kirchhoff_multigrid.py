@@ -13,6 +13,12 @@ spaces) against two independent sources:
    the same matrices and the Krylov tolerance is 1e-9. The same comparison
    is made for the pure penalty (alpha = 0, compliance kappa = 1e-5), the
    fast variant of doc/kirchhoff.md 5.
+Every run sets 'Check multigrid': after each update of the level matrices
+(cell by cell, on the cells whose contact status changed) the program
+checks them against the Galerkin products P^T A P formed with the V-cycle's
+global transfer matrices, and stops with an error above a relative defect
+of 1e-4 (measured: about 2e-7, single precision; a wrong cell prolongation
+or constrained diagonal gives 1e-3 to 0.4).
 It also checks that the preconditioner works: the average number of Krylov
 iterations per Newton step stays below 30 on every mesh (a V-cycle that is
 wrong by a constant factor or with broken constraints needs hundreds)."""
@@ -22,7 +28,8 @@ from common import parse_args, run, close, check, finish
 from kirchhoff_lib.plate import plate_prm
 
 args = parse_args()
-MG = "subsection Kirchhoff\n  set Linear solver = multigrid\nend\n"
+MG = ("subsection Kirchhoff\n  set Linear solver = multigrid\n"
+      "  set Check multigrid = true\nend\n")
 
 
 def average_krylov(cycle):

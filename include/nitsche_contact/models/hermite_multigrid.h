@@ -4,35 +4,45 @@
 // The BFS spaces of a uniformly refined rectangle are nested, so the
 // prolongation from level l to l+1 is exact Hermite interpolation: the
 // fine vertex values (w, w_x, w_y, w_xy) of a coarse function, evaluated on
-// the coarse cell that holds the fine vertex. The coarse operators are
+// the coarse cell that holds the fine vertex. The coarse operators are the
 // Galerkin products A_l = P_l^T A_{l+1} P_l of the current Newton Jacobian,
 // so they contain the contact terms of the current status without
-// re-assembling anything on the coarse levels. Smoother: Chebyshev iteration
-// around point Jacobi (deal.II PreconditionChebyshev); coarse level: sparse
-// direct solve (Amesos KLU); cycle: deal.II's Multigrid V-cycle.
+// re-assembling anything on the coarse levels. They are formed cell by
+// cell: the Jacobian is a sum of 16 x 16 cell matrices (the same bending
+// and inactive-contact matrix on every cell, plus the contact matrix of the
+// cell's active points), and P_l restricted to one child cell is a 16 x 16
+// matrix that depends only on the child's position in its parent, so
+// P_l^T A_{l+1} P_l is a sum of restricted cell matrices. On a new status
+// only the cells whose status changed are restricted again. Smoother:
+// Chebyshev iteration around point Jacobi (deal.II PreconditionChebyshev);
+// coarse level: sparse direct solve (UMFPACK); cycle: deal.II's Multigrid
+// V-cycle.
 //
-// The Galerkin products are formed in double precision with Trilinos
-// (EpetraExt); the V-cycle itself runs in single precision on deal.II
-// SparseMatrix<float> copies of the level matrices, whose products are
-// multithreaded. It is only a preconditioner of the double-precision Krylov
-// method on the exact Jacobian, and the smoother is bound by memory
-// bandwidth, which single precision halves (measured in doc/kirchhoff.md).
+// The restricted cell matrices are computed in double precision; the
+// V-cycle runs in single precision on deal.II SparseMatrix<float> level
+// matrices, whose products are multithreaded. It is only a preconditioner
+// of the double-precision Krylov method on the exact Jacobian, and the
+// smoother is bound by memory bandwidth, which single precision halves
+// (measured in doc/kirchhoff.md).
 //
 // Homogeneous Dirichlet-type constraints (clamped, simply supported and
 // symmetry edges) are handled by giving each constrained coarse dof the
 // prolongation "identity onto the same dof at the same vertex", which is
 // constrained on the fine level as well: the constrained rows of the fine
-// matrix are diagonal, so the constrained coarse rows are too.
+// matrix are diagonal, so the constrained coarse rows are too, with the
+// diagonal entry of that fine dof.
 #ifndef nitsche_contact_models_hermite_multigrid_h
 #define nitsche_contact_models_hermite_multigrid_h
 
 #include <deal.II/base/mg_level_object.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
@@ -41,6 +51,7 @@
 
 #include <nitsche_contact/fe/fe_bicubic_hermite.h>
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -61,7 +72,8 @@ namespace NitscheContact
     /// extents h. vertex_dofs[4 (i + (nx+1) j) + k] is the finest-level
     /// (DoFHandler) index of dof k (w, w_x, w_y, w_xy) at vertex (i, j);
     /// constrained[d] says whether that dof carries a homogeneous
-    /// constraint. Levels are halved while both cell counts stay even and
+    /// constraint; fine_pattern is (or contains) the sparsity pattern of
+    /// the finest-level matrices. Levels are halved while both cell counts stay even and
     /// the coarse problem has more than `max_coarse_dofs` dofs.
     void
     setup(unsigned int                                   nx,
@@ -69,17 +81,39 @@ namespace NitscheContact
           const dealii::Tensor<1, 2>                    &h,
           const std::vector<dealii::types::global_dof_index> &vertex_dofs,
           const std::vector<bool>                       &constrained,
+          const dealii::DynamicSparsityPattern          &fine_pattern,
           unsigned int max_coarse_dofs = 1500);
 
-    /// Take a new finest-level matrix (kept by reference until the next
-    /// call) and re-initialise the finest-level smoother for it. With
-    /// `galerkin` (always on the first call after setup()) also recompute
-    /// the Galerkin coarse matrices, their smoothers and the coarse
-    /// factorisation; otherwise the coarse levels keep those of an earlier
-    /// Jacobian, which still makes a good preconditioner when only a few
-    /// contact points changed status (the Krylov method uses the exact A).
+    /// Take the first Newton matrix A of a mesh and build the level
+    /// matrices. A must be the sum over all cells of `cell_matrix` (the same
+    /// on every cell) and, on the listed cells, of the given cell matrices,
+    /// assembled with the constraints (rows and columns of constrained dofs
+    /// removed, any diagonal entry on constrained rows). Cell matrices are
+    /// 16 x 16, row-major, in the local dof order 4 v + k of setup()
+    /// (v = vx + 2 vy); the cell with lower-left vertex (i, j) has index
+    /// i + nx j. A is kept by reference until the next call.
     void
-    reinit_matrix(const MatrixType &A, bool galerkin = true);
+    reinit(const MatrixType                &A,
+           const dealii::FullMatrix<double> &cell_matrix,
+           const std::vector<unsigned int>  &cells,
+           const std::vector<double>        &cell_matrices);
+
+    /// Take a Newton matrix A that differs from the one of the last
+    /// reinit() or update() only on the listed cells, by the given cell
+    /// matrices (same conventions). The level matrices are updated by the
+    /// restricted differences.
+    void
+    update(const MatrixType                &A,
+           const std::vector<unsigned int> &cells,
+           const std::vector<double>       &differences);
+
+    /// Largest relative deviation |A_l x - P_l^T A_{l+1} P_l x| / |A_l x|
+    /// over the coarse levels l for a fixed pseudo-random x, computed with
+    /// the global single-precision transfer matrices of the V-cycle (built
+    /// independently of the cell-by-cell restriction): about 1e-7 when the
+    /// level matrices are the Galerkin products of the current A.
+    double
+    galerkin_defect() const;
 
     /// One V-cycle applied to src (the preconditioner interface of the
     /// deal.II Krylov solvers).
@@ -89,7 +123,7 @@ namespace NitscheContact
     unsigned int
     n_levels() const
     {
-      return prolongation.size() + 1;
+      return L + 1;
     }
     /// Cells per direction on the coarsest level.
     std::pair<unsigned int, unsigned int>
@@ -116,22 +150,55 @@ namespace NitscheContact
       std::vector<unsigned int>     offset;
     };
 
-    /// Copy the values of A into F; with new_pattern also (re)build the
-    /// pattern of F from that of A.
+    /// Copy the values of A into F, whose pattern contains that of A; with
+    /// new_offsets first compute F.offset.
     static void
-    copy_matrix(const MatrixType &A, FloatMatrix &F, bool new_pattern);
+    copy_matrix(const MatrixType &A, FloatMatrix &F, bool new_offsets);
+
+    /// Zero the rows and columns of the constrained dofs of a level-l cell
+    /// in a 16 x 16 cell matrix.
+    void
+    remove_constrained(unsigned int l, unsigned int cell, double *m) const;
+    /// Restrict level-(l+1) cell matrices (rows and columns of constrained
+    /// dofs zero) to level l: per parent cell the sum over its listed
+    /// children of P_pos^T M P_pos, constrained rows and columns removed.
+    void
+    restrict_cells(unsigned int                     l,
+                   const std::vector<unsigned int> &child_cells,
+                   const std::vector<double>       &child_matrices,
+                   std::vector<unsigned int>       &parent_cells,
+                   std::vector<double>             &parent_matrices) const;
+    /// Add cell matrices into the level-l matrices (l < L).
+    void
+    add_cells(unsigned int                     l,
+              const std::vector<unsigned int> &cells,
+              const std::vector<double>       &matrices);
+    /// Add the fine differences to every coarse level, copy A, and
+    /// re-initialise the smoothers and the coarse solver.
+    void
+    add_and_finish(const MatrixType                &A,
+                   const std::vector<unsigned int> &cells,
+                   const std::vector<double>       &matrices);
 
     const FE_BicubicHermite<2> &fe;
     MPI_Comm                    comm;
+    /// number of coarse levels: the levels are 0 (coarsest) .. L (finest)
+    unsigned int                L = 0;
     unsigned int                nx0 = 0, ny0 = 0;
-
-    /// prolongation[l]: level l -> level l+1
-    std::vector<std::unique_ptr<MatrixType>> prolongation;
-    /// coarse matrices, levels 0 .. L-1 (level L is the given matrix)
-    std::vector<std::unique_ptr<MatrixType>> coarse_matrices;
-    const MatrixType                        *fine_matrix = nullptr;
+    /// finest-level dof of vertex-kind index 4 (i + (nx+1) j) + k
+    std::vector<dealii::types::global_dof_index> fine_vertex_dofs;
+    /// level_constrained[l][4 (i + (n+1) j) + k]: whether dof k at vertex
+    /// (i, j) of level l (n cells per row) is constrained, l = 0 .. L
+    std::vector<std::vector<bool>> level_constrained;
+    /// local_prolongation[l][pos]: the 16 x 16 matrix (row-major, child
+    /// dof, parent dof) that gives the dofs of the child in position
+    /// pos = px + 2 py of a level-l cell from the dofs of the cell
+    std::vector<std::array<std::array<double, 256>, 4>> local_prolongation;
+    const MatrixType *fine_matrix = nullptr;
     /// single-precision level matrices 0 .. L (level L: copy of A)
     std::vector<FloatMatrix> levels;
+    /// the coarsest level in double precision (coarse solver)
+    dealii::SparseMatrix<double> coarse_matrix;
     /// single-precision prolongation (l -> l+1) and its transpose
     std::vector<FloatMatrix> prolong_f, restrict_f;
     bool                     fine_pattern_ready = false;

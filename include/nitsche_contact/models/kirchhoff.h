@@ -75,6 +75,10 @@ namespace NitscheContact
     energy() const override;
     double
     energy_slope() const override;
+    bool
+    prepare_line_search() override;
+    double
+    line_slope(double t) const override;
     double
     increment_energy_norm() const override;
     double
@@ -200,9 +204,19 @@ namespace NitscheContact
     std::unique_ptr<HermiteMultigrid> multigrid;
     /// 'Linear solver = direct'
     std::unique_ptr<ReusedFactorization> factorization;
-    /// Krylov iterations of the solve right after the last Galerkin
-    /// rebuild of the multigrid hierarchy (0: none yet), and of the last.
-    unsigned int mg_reference_iterations = 0, mg_last_iterations = 0;
+    /// whether the multigrid levels hold the Galerkin matrices of the
+    /// matrix of multigrid_status (its contact status)
+    bool                       multigrid_ready = false;
+    /// 'Check multigrid': verify the level matrices after every update
+    bool                       check_multigrid = false;
+    /// bending + inactive contact matrix of every cell
+    dealii::FullMatrix<double> constant_cell_matrix;
+    std::vector<unsigned char> multigrid_status;
+    /// prepare_line_search(): phi'(t) = line_constant + t line_linear +
+    /// sum over the points whose contact state changes in (0, 1) of
+    /// -coefficient * min(s0 + t ds, 0), stored as (s0, ds, coefficient)
+    double              line_constant = 0., line_linear = 0.;
+    std::vector<double> line_switching;
     std::unique_ptr<dealii::FunctionParser<2>> exact_value, exact_gradient,
       exact_hessian;
 
