@@ -186,6 +186,27 @@ namespace NitscheContact
     Tensor<1, 3> sigma_t;
   };
 
+  /// The residual part of add_point_contribution() for frictionless points
+  /// (in.friction = 0), with the linearisations of the n shape functions in
+  /// two arrays instead of ShapeContactData: the same arithmetic, for
+  /// models that evaluate many points per cell.
+  inline void
+  add_frictionless_point_residual(const PointInput &in,
+                                  const PointState &st,
+                                  const double     *shape_u_n,
+                                  const double     *shape_sigma_n,
+                                  const unsigned int n,
+                                  const double      JxW,
+                                  double           *cell_residual)
+  {
+    const double t_over_r = in.theta / in.r;
+    for (unsigned int i = 0; i < n; ++i)
+      cell_residual[i] += (-t_over_r * in.sigma_n * shape_sigma_n[i] -
+                           st.lambda_n * (shape_u_n[i] -
+                                          t_over_r * shape_sigma_n[i])) *
+                          JxW;
+  }
+
   /// Add the residual and (optionally) the generalized Jacobian of the
   /// contact terms of one quadrature point with weight JxW to a cell
   /// residual vector and matrix. `shapes[i]` holds the linearisations of

@@ -545,6 +545,21 @@ namespace NitscheContact
             s.sigma_n = lambda_eps * kit.laplacians(i, q);
         }
 
+    kit.value_rows.resize(16 * nq);
+    kit.operator_rows.resize(16 * nq);
+    kit.u_n_rows.resize(16 * nq);
+    kit.sigma_n_rows.resize(16 * nq);
+    for (unsigned int q = 0; q < nq; ++q)
+      for (unsigned int i = 0; i < 16; ++i)
+        {
+          kit.value_rows[16 * q + i]    = kit.values(i, q);
+          kit.operator_rows[16 * q + i] = (formulation == Formulation::gsv) ?
+                                            kit.bilaplacians(i, q) :
+                                            kit.laplacians(i, q);
+          kit.u_n_rows[16 * q + i]      = kit.shapes[q][i].u_n;
+          kit.sigma_n_rows[16 * q + i]  = kit.shapes[q][i].sigma_n;
+        }
+
     // The kernel's Jacobian of one point depends on the point only through
     // the contact state (frictionless: dlambda_n = 0 or lambda_scale), so
     // on a uniform mesh it is computed once per quadrature point and state.
@@ -625,12 +640,13 @@ namespace NitscheContact
                               const unsigned int q,
                               const double      *u) const
   {
-    double w = 0., op = 0.;
+    const double *value_row    = &kit.value_rows[16 * q];
+    const double *operator_row = &kit.operator_rows[16 * q];
+    double        w = 0., op = 0.;
     for (unsigned int i = 0; i < 16; ++i)
       {
-        w += u[i] * kit.values(i, q);
-        op += u[i] * (formulation == Formulation::gsv ? kit.bilaplacians(i, q) :
-                                                        kit.laplacians(i, q));
+        w += u[i] * value_row[i];
+        op += u[i] * operator_row[i];
       }
     PointInput in;
     in.u_n = -w;
@@ -785,8 +801,11 @@ namespace NitscheContact
               {
                 const PointInput in = point_input(c, q, u);
                 const PointState st = evaluate_contact_point(in, scheme);
-                add_point_contribution(in, st, kit.shapes[q], kit.JxW[q],
-                                       nullptr, cell_residual);
+                add_frictionless_point_residual(in, st,
+                                                &kit.u_n_rows[16 * q],
+                                                &kit.sigma_n_rows[16 * q],
+                                                16, kit.JxW[q],
+                                                cell_residual.begin());
                 if (with_energy)
                   energy += energy_density(in, st) * kit.JxW[q];
                 point_status[c * nq + q] =
@@ -1149,10 +1168,8 @@ namespace NitscheContact
                 double           dw = 0., dop = 0.;
                 for (unsigned int i = 0; i < 16; ++i)
                   {
-                    dw += du[i] * kit.values(i, q);
-                    dop += du[i] * (formulation == Formulation::gsv ?
-                                      kit.bilaplacians(i, q) :
-                                      kit.laplacians(i, q));
+                    dw += du[i] * kit.value_rows[16 * q + i];
+                    dop += du[i] * kit.operator_rows[16 * q + i];
                   }
                 const double dsigma =
                   !kit.sigma_terms ? 0. :

@@ -153,6 +153,10 @@ namespace NitscheContact
       dealii::FullMatrix<double> contact_all_active;
       /// per q: linearisations of each shape function for the kernel
       std::vector<std::vector<ShapeContactData>> shapes;
+      /// the same data in contiguous rows of 16 per q: N_i(x_q), the
+      /// operator of sigma_n (Delta^2 N_i for gsv, Delta N_i for nitsche),
+      /// and the shapes' u_n and sigma_n linearisations
+      std::vector<double> value_rows, operator_rows, u_n_rows, sigma_n_rows;
       std::vector<double>                        load_shape; ///< int N_i
     };
 
