@@ -284,7 +284,13 @@ namespace NitscheContact
     const DynamicSparsityPattern               &fine_pattern,
     const unsigned int                          max_coarse_dofs)
   {
+    // (objects that point to the old level matrices and patterns go first)
     multigrid.reset();
+    smoother.reset();
+    coarse.reset();
+    level_matrices.reset();
+    transfer.reset();
+    level_double.clear();
     fine_matrix        = nullptr;
     fine_pattern_ready = false;
     fine_vertex_dofs   = vertex_dofs;
@@ -337,7 +343,6 @@ namespace NitscheContact
     levels     = std::vector<FloatMatrix>(L + 1);
     levels[L].pattern.copy_from(fine_pattern);
     levels[L].matrix.reinit(levels[L].pattern);
-    coarse_matrix.clear();
     local_prolongation.resize(L);
     std::vector<double>              values;
     std::vector<Tensor<1, 2>>        grads;
@@ -450,8 +455,10 @@ namespace NitscheContact
         levels[l].pattern.copy_from(lsp);
         levels[l].matrix.reinit(levels[l].pattern);
       }
-    if (L > 0)
-      coarse_matrix.reinit(levels[0].pattern);
+    // double-precision level matrices (l < L; the single level when L = 0)
+    level_double = std::vector<SparseMatrix<double>>(std::max(L, 1u));
+    for (unsigned int l = 0; l < level_double.size(); ++l)
+      level_double[l].reinit(levels[l].pattern);
 
     transfer       = std::make_unique<Transfer>(prolong_f, restrict_f);
     level_matrices = std::make_unique<LevelMatrices>(levels);
@@ -547,11 +554,7 @@ namespace NitscheContact
           g[a] = 4 * (ic + (a / 4) % 2 + (ncx + 1) * (jc + a / 8)) + a % 4;
         const double *m = &matrices[256 * e];
         for (unsigned int a = 0; a < 16; ++a)
-          {
-            levels[l].matrix.add(g[a], 16, g, m + 16 * a, true, true);
-            if (l == 0)
-              coarse_matrix.add(g[a], 16, g, m + 16 * a, true, true);
-          }
+          level_double[l].add(g[a], 16, g, m + 16 * a, true, true);
       }
   }
 
@@ -584,7 +587,7 @@ namespace NitscheContact
       {
         // one level: the coarse solver factorises A itself
         const Epetra_CrsMatrix &E = A.trilinos_matrix();
-        coarse_matrix.reinit(levels[0].pattern);
+        level_double[0] = 0.;
         int     n;
         double *values;
         int    *indices;
@@ -592,14 +595,20 @@ namespace NitscheContact
           {
             E.ExtractMyRowView(r, n, values, indices);
             for (int k = 0; k < n; ++k)
-              coarse_matrix.set(TrilinosWrappers::global_row_index(E, r),
+              level_double[0].set(TrilinosWrappers::global_row_index(E, r),
                                 TrilinosWrappers::global_column_index(
                                   E, indices[k]),
                                 values[k]);
           }
       }
+    // The single-precision level matrices of the V-cycle from the double
+    // ones (so that rounding does not accumulate over the updates: on
+    // coarse levels the contact part of an entry can exceed its bending
+    // part by orders of magnitude before the point leaves contact).
+    for (unsigned int l = 0; l < L; ++l)
+      levels[l].matrix.copy_from(level_double[l]);
     smoother->reinit(*level_matrices, 1, L + 1);
-    coarse->reinit(coarse_matrix);
+    coarse->reinit(level_double[0]);
     if (!multigrid)
       multigrid = std::make_unique<Multigrid<LevelVector>>(
         *level_matrices, *coarse, *transfer, *smoother, *smoother, 0, L);
@@ -618,9 +627,7 @@ namespace NitscheContact
     AssertThrow(cell_matrix.m() == 16 && cell_matrix.n() == 16,
                 ExcDimensionMismatch(cell_matrix.m(), 16));
     for (unsigned int l = 0; l < L; ++l)
-      levels[l].matrix = 0.;
-    if (L > 0)
-      coarse_matrix = 0.;
+      level_double[l] = 0.;
 
     // The part that is the same on every cell. A cell without constrained
     // dofs has the same restricted matrix ('interior') as every other such
@@ -728,9 +735,7 @@ namespace NitscheContact
                   const double d = A.diag_element(
                     fine_vertex_dofs[4 * ((i << s) + nf * (j << s)) + k]);
                   const types::global_dof_index g = 4 * (i + n * j) + k;
-                  levels[l].matrix.add(g, g, d);
-                  if (l == 0)
-                    coarse_matrix.add(g, g, d);
+                  level_double[l].add(g, g, d);
                 }
       }
 

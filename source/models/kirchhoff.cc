@@ -1,7 +1,6 @@
 // Model 3: Kirchhoff-Love plate, bicubic Hermite element, GSV stabilised
 // obstacle term or "Kirchhoff with Nitsche". See doc/kirchhoff.md for the
 // formulation as implemented and theory.md section 4 for the derivations.
-#include <deal.II/base/timer.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parallel.h>
 #include <deal.II/base/utilities.h>
@@ -149,12 +148,12 @@ namespace NitscheContact
         "direction towards the next status and the solve stops at "
         "max(1e-2, this value) (inexact Newton; measured on the paper test "
         "at 264k dofs: the same Newton iterations as with 1e-3 or with this "
-        "tolerance throughout). On a settled status it stops at "
+        "tolerance throughout); the first solve of a mesh counts as such. "
+        "On a settled status it stops at "
         "min(1e-2, max(this value, 0.1 tol |U|_a / |dU_prev|_a)), tol the "
-        "Newton tolerance and dU_prev the previous Newton correction, and "
-        "at this value on the first solve of a mesh: accurate enough that "
-        "the error left is about a tenth of what the Newton test accepts. "
-        "Must be in (0, 1).");
+        "Newton tolerance and dU_prev the previous Newton correction (this "
+        "value if there is none): meant to leave an error of about a tenth "
+        "of what the Newton test accepts. Must be in (0, 1).");
       prm.declare_entry(
         "Check multigrid",
         "false",
@@ -979,12 +978,15 @@ namespace NitscheContact
         // step is only a direction towards the next status, and a loose
         // solve is enough. On a settled status the correction only has to
         // be accurate relative to the Newton tolerance: with the previous
-        // correction |dU_prev|_a (still in 'increment') as the estimate of
-        // this one, a relative residual of 0.1 tol |U|_a / |dU_prev|_a
-        // leaves an error well below tol |U|_a, so the solve stops there
-        // (at most at the loose tolerance, at least at the Krylov
-        // tolerance; the Krylov tolerance itself when there is no previous
-        // correction, as on the first solve of a mesh).
+        // correction |dU_prev|_a (still in 'increment') as the size of this
+        // one, a relative residual of 0.1 tol |U|_a / |dU_prev|_a is meant
+        // to leave an error of about a tenth of what the Newton test
+        // accepts (a heuristic: the residual is measured in l2, not in the
+        // energy norm; CG from zero never overestimates |dU|_a, so the
+        // Newton test stays safe). At most the loose tolerance, at least
+        // the Krylov tolerance, and the Krylov tolerance itself when there
+        // is no previous correction. (The first solve of a mesh counts
+        // every point as changed and uses the loose tolerance.)
         double tolerance = std::max(krylov_tolerance, loose_krylov_tolerance);
         if (status_settled)
           {
@@ -1018,8 +1020,9 @@ namespace NitscheContact
           {
             throw ConvergenceFailure(
               "the multigrid-preconditioned Krylov solver of the Kirchhoff "
-              "model did not reach the 'Kirchhoff/Krylov tolerance' " +
-              number_to_string(krylov_tolerance) + " in " +
+              "model did not reach its relative tolerance " +
+              number_to_string(tolerance) + " ('Kirchhoff/Krylov tolerance' " +
+              number_to_string(krylov_tolerance) + ") in " +
               std::to_string(e.last_step) + " iterations (residual " +
               number_to_string(e.last_residual) +
               "); use 'Linear solver = direct'");

@@ -18,9 +18,9 @@
 // coarse level: sparse direct solve (UMFPACK); cycle: deal.II's Multigrid
 // V-cycle.
 //
-// The restricted cell matrices are computed in double precision; the
-// V-cycle runs in single precision on deal.II SparseMatrix<float> level
-// matrices, whose products are multithreaded. It is only a preconditioner
+// The restricted cell matrices are computed and summed in double precision;
+// the V-cycle runs in single precision on deal.II SparseMatrix<float> copies
+// of the level matrices, whose products are multithreaded. It is only a preconditioner
 // of the double-precision Krylov method on the exact Jacobian, and the
 // smoother is bound by memory bandwidth, which single precision halves
 // (measured in doc/kirchhoff.md).
@@ -197,8 +197,10 @@ namespace NitscheContact
     const MatrixType *fine_matrix = nullptr;
     /// single-precision level matrices 0 .. L (level L: copy of A)
     std::vector<FloatMatrix> levels;
-    /// the coarsest level in double precision (coarse solver)
-    dealii::SparseMatrix<double> coarse_matrix;
+    /// the levels 0 .. L-1 in double precision, on the patterns of
+    /// `levels` (the updates accumulate here; level 0 is the coarse
+    /// solver's matrix); with L = 0 the single level
+    std::vector<dealii::SparseMatrix<double>> level_double;
     /// single-precision prolongation (l -> l+1) and its transpose
     std::vector<FloatMatrix> prolong_f, restrict_f;
     bool                     fine_pattern_ready = false;
