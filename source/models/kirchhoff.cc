@@ -867,6 +867,29 @@ namespace NitscheContact
 
 
 
+  bool
+  KirchhoffModel::active_contact_matrix(const unsigned char *status,
+                                        FullMatrix<double>  &m) const
+  {
+    const unsigned int nq = quadrature.size();
+    const unsigned int n_active =
+      std::count_if(status, status + nq, [](unsigned char a) { return a != 0; });
+    if (n_active == 0)
+      return false;
+    if (n_active == nq)
+      m = kit.contact_all_active;
+    else
+      {
+        m = 0.;
+        for (unsigned int q = 0; q < nq; ++q)
+          if (status[q])
+            m.add(1., kit.contact_switch[q]);
+      }
+    return true;
+  }
+
+
+
   void
   KirchhoffModel::assemble_matrix(const std::vector<unsigned char> &status)
   {
@@ -876,20 +899,8 @@ namespace NitscheContact
     FullMatrix<double>                   cell_matrix(16, 16);
     for (unsigned int c = 0; c < cells.size(); ++c)
       {
-        const unsigned char *s = &status[std::size_t(c) * nq];
-        const unsigned int   n_active =
-          std::count_if(s, s + nq, [](unsigned char a) { return a != 0; });
-        if (n_active == 0)
+        if (!active_contact_matrix(&status[std::size_t(c) * nq], cell_matrix))
           continue;
-        if (n_active == nq)
-          cell_matrix = kit.contact_all_active;
-        else
-          {
-            cell_matrix = 0.;
-            for (unsigned int q = 0; q < nq; ++q)
-              if (s[q])
-                cell_matrix.add(1., kit.contact_switch[q]);
-          }
         std::copy(cell_dofs.begin() + 16 * c,
                   cell_dofs.begin() + 16 * (c + 1),
                   dofs.begin());
@@ -940,18 +951,8 @@ namespace NitscheContact
             else
               {
                 // the contact matrix of the active points
-                const unsigned int n_active = std::count(now, now + nq, 1);
-                if (n_active == 0)
+                if (!active_contact_matrix(now, m))
                   continue;
-                if (n_active == nq)
-                  m = kit.contact_all_active;
-                else
-                  {
-                    m = 0.;
-                    for (unsigned int q = 0; q < nq; ++q)
-                      if (now[q])
-                        m.add(1., kit.contact_switch[q]);
-                  }
               }
             listed.push_back(c);
             for (unsigned int i = 0; i < 16; ++i)

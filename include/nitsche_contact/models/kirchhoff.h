@@ -166,6 +166,13 @@ namespace NitscheContact
     setup_dofs();
     void
     build_cell_kit();
+    /// The contact part of the Jacobian of a cell whose points have the
+    /// given status (nonzero: active), without the inactive part (that is
+    /// in constant_cell_matrix); false, and m untouched, if no point is
+    /// active.
+    bool
+    active_contact_matrix(const unsigned char        *status,
+                          dealii::FullMatrix<double> &m) const;
     /// Kernel input at quadrature point q of cell c for local values U_c.
     PointInput
     point_input(unsigned int c, unsigned int q, const double *u_local) const;
