@@ -485,6 +485,35 @@ namespace NitscheContact
 
 
   void
+  HermiteMultigrid::add_restricted(const unsigned int l,
+                                   const unsigned int pos,
+                                   const double      *child_matrix,
+                                   double            *parent_matrix) const
+  {
+    const double *P = local_prolongation[l][pos].data();
+    double        t[256];
+    // t = M P, then parent += P^T t
+    for (unsigned int i = 0; i < 16; ++i)
+      for (unsigned int m = 0; m < 16; ++m)
+        {
+          double sum = 0.;
+          for (unsigned int j = 0; j < 16; ++j)
+            sum += child_matrix[16 * i + j] * P[16 * j + m];
+          t[16 * i + m] = sum;
+        }
+    for (unsigned int a = 0; a < 16; ++a)
+      for (unsigned int m = 0; m < 16; ++m)
+        {
+          double sum = 0.;
+          for (unsigned int i = 0; i < 16; ++i)
+            sum += P[16 * i + a] * t[16 * i + m];
+          parent_matrix[16 * a + m] += sum;
+        }
+  }
+
+
+
+  void
   HermiteMultigrid::restrict_cells(
     const unsigned int               l,
     const std::vector<unsigned int> &child_cells,
@@ -496,7 +525,6 @@ namespace NitscheContact
     std::vector<int>   slot(std::size_t(ncx) * ncy, -1);
     parent_cells.clear();
     parent_matrices.clear();
-    double t[256];
     for (std::size_t e = 0; e < child_cells.size(); ++e)
       {
         const unsigned int child = child_cells[e];
@@ -509,26 +537,8 @@ namespace NitscheContact
             parent_cells.push_back(parent);
             parent_matrices.resize(parent_matrices.size() + 256, 0.);
           }
-        const double *d = &child_matrices[256 * e];
-        const double *P = local_prolongation[l][pos].data();
-        // t = M P, then parent += P^T t
-        for (unsigned int i = 0; i < 16; ++i)
-          for (unsigned int m = 0; m < 16; ++m)
-            {
-              double sum = 0.;
-              for (unsigned int j = 0; j < 16; ++j)
-                sum += d[16 * i + j] * P[16 * j + m];
-              t[16 * i + m] = sum;
-            }
-        double *out = &parent_matrices[256 * slot[parent]];
-        for (unsigned int a = 0; a < 16; ++a)
-          for (unsigned int m = 0; m < 16; ++m)
-            {
-              double sum = 0.;
-              for (unsigned int i = 0; i < 16; ++i)
-                sum += P[16 * i + a] * t[16 * i + m];
-              out[16 * a + m] += sum;
-            }
+        add_restricted(l, pos, &child_matrices[256 * e],
+                       &parent_matrices[256 * slot[parent]]);
       }
     // The global prolongation has no entries in the columns of constrained
     // coarse dofs but the identity onto a constrained fine dof, whose rows
@@ -681,24 +691,9 @@ namespace NitscheContact
                        parent_matrices);
         // the interior matrix of level l: the four children of an interior
         // cell restricted to it (no constrained dofs to remove)
-        std::vector<unsigned int> four_children(4), one_parent;
-        std::vector<double>       four_matrices;
+        std::fill(restricted.begin(), restricted.end(), 0.);
         for (unsigned int pos = 0; pos < 4; ++pos)
-          {
-            four_children[pos] = pos % 2 + nfx * (pos / 2);
-            four_matrices.insert(four_matrices.end(), interior.begin(),
-                                 interior.end());
-          }
-        {
-          // restrict_cells() would remove the constrained dofs of the
-          // corner cell it is applied to; compute on a copy of the
-          // constraint flags without any
-          std::vector<bool> saved(level_constrained[l].size(), false);
-          level_constrained[l].swap(saved);
-          restrict_cells(l, four_children, four_matrices, one_parent,
-                         restricted);
-          level_constrained[l].swap(saved);
-        }
+          add_restricted(l, pos, interior.data(), restricted.data());
         interior = restricted;
         add_cells(l, parents, parent_matrices);
         std::vector<unsigned int> others;

@@ -36,10 +36,8 @@
 
 #include <deal.II/base/mg_level_object.h>
 #include <deal.II/base/tensor.h>
-#include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/precondition.h>
-#include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -159,6 +157,12 @@ namespace NitscheContact
     /// in a 16 x 16 cell matrix.
     void
     remove_constrained(unsigned int l, unsigned int cell, double *m) const;
+    /// parent_matrix += P_pos^T child_matrix P_pos (level l+1 -> l).
+    void
+    add_restricted(unsigned int  l,
+                   unsigned int  pos,
+                   const double *child_matrix,
+                   double       *parent_matrix) const;
     /// Restrict level-(l+1) cell matrices (rows and columns of constrained
     /// dofs zero) to level l: per parent cell the sum over its listed
     /// children of P_pos^T M P_pos, constrained rows and columns removed.
