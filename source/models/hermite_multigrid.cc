@@ -1,5 +1,6 @@
 // Geometric multigrid for the bicubic Hermite plate; see the header.
 #include <deal.II/base/index_set.h>
+#include <deal.II/base/parallel.h>
 #include <deal.II/lac/diagonal_matrix.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_index_access.h>
@@ -10,10 +11,419 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace NitscheContact
 {
   using namespace dealii;
+
+  namespace
+  {
+    /// Four lanes of Number in one GCC/Clang vector (SSE registers on
+    /// plain x86-64): the four dofs of a vertex.
+    template <typename Number>
+    struct Lanes;
+    template <>
+    struct Lanes<float>
+    {
+      typedef float type __attribute__((vector_size(16)));
+    };
+    template <>
+    struct Lanes<double>
+    {
+      typedef double type __attribute__((vector_size(32)));
+    };
+
+    template <typename V, typename Number>
+    inline V
+    load4(const Number *p)
+    {
+      V v;
+      std::memcpy(&v, p, sizeof(V));
+      return v;
+    }
+
+    template <typename V, typename Number>
+    inline void
+    store4(const V &v, Number *p)
+    {
+      std::memcpy(p, &v, sizeof(V));
+    }
+  } // namespace
+
+
+
+  void
+  HermiteCellOperator::reinit(
+    const unsigned int                     nx_,
+    const unsigned int                     ny_,
+    const FullMatrix<double>              &cell_matrix,
+    const std::vector<FullMatrix<double>> &point_matrices_,
+    const std::vector<bool>               &constrained)
+  {
+    nx = nx_;
+    ny = ny_;
+    nq = point_matrices_.size();
+    AssertThrow(cell_matrix.m() == 16 && cell_matrix.n() == 16,
+                ExcDimensionMismatch(cell_matrix.m(), 16));
+    AssertDimension(constrained.size(), m());
+    point_matrices = point_matrices_;
+
+    // Stencil blocks per kind of vertex: sum over the vertex's cells that
+    // exist (cell (i + cx, j + cy), cx, cy in {-1, 0}); and the diagonal
+    // of a constrained dof of that kind of vertex.
+    std::array<std::array<double, 4>, 9> constrained_diagonal;
+    for (auto &kind : blocks)
+      for (auto &block : kind)
+        block.fill(0.);
+    for (auto &d : constrained_diagonal)
+      d.fill(0.);
+    for (unsigned int ky = 0; ky < 3; ++ky)
+      for (unsigned int kx = 0; kx < 3; ++kx)
+        for (int cy = -1; cy <= 0; ++cy)
+          for (int cx = -1; cx <= 0; ++cx)
+            {
+              if ((cx == -1 && kx == 0) || (cx == 0 && kx == 2) ||
+                  (cy == -1 && ky == 0) || (cy == 0 && ky == 2))
+                continue;
+              // the vertex is local vertex (-cx) + 2 (-cy) of that cell
+              const unsigned int v = -cx + 2 * (-cy);
+              for (unsigned int k = 0; k < 4; ++k)
+                constrained_diagonal[kx + 3 * ky][k] +=
+                  std::abs(cell_matrix(4 * v + k, 4 * v + k));
+              for (unsigned int w = 0; w < 4; ++w)
+                {
+                  const int dx = int(w % 2) + cx, dy = int(w / 2) + cy;
+                  auto &block = blocks[kx + 3 * ky][(dx + 1) + 3 * (dy + 1)];
+                  for (unsigned int k = 0; k < 4; ++k)
+                    for (unsigned int kp = 0; kp < 4; ++kp)
+                      block[4 * kp + k] += cell_matrix(4 * v + k, 4 * w + kp);
+                }
+            }
+    for (unsigned int kind = 0; kind < 9; ++kind)
+      for (unsigned int d = 0; d < 9; ++d)
+        for (unsigned int e = 0; e < 16; ++e)
+          blocks_float[kind][d][e] = float(blocks[kind][d][e]);
+
+    const auto kind1 = [](unsigned int i, unsigned int n) {
+      return i == 0 ? 0u : (i == n ? 2u : 1u);
+    };
+    constrained_dofs.clear();
+    constrained_values.clear();
+    for (size_type s = 0; s < m(); ++s)
+      if (constrained[s])
+        {
+          const unsigned int v = s / 4, i = v % (nx + 1), j = v / (nx + 1);
+          constrained_dofs.push_back(s);
+          constrained_values.push_back(
+            constrained_diagonal[kind1(i, nx) + 3 * kind1(j, ny)][s % 4]);
+        }
+
+    cell_slot.assign(std::size_t(nx) * ny, -1);
+    slots.clear();
+    free_slots.clear();
+    slot_of_key.clear();
+    contact_cells.clear();
+    row_start.assign(ny + 1, 0);
+  }
+
+
+
+  void
+  HermiteCellOperator::release(const unsigned int c)
+  {
+    const int s = cell_slot[c];
+    if (s < 0)
+      return;
+    cell_slot[c] = -1;
+    if (--slots[s].users == 0)
+      {
+        slot_of_key.erase(slots[s].key);
+        slots[s].key.clear();
+        free_slots.push_back(s);
+      }
+  }
+
+
+
+  void
+  HermiteCellOperator::set_cell(const unsigned int c, const unsigned char *status)
+  {
+    std::string key(nq, '0');
+    bool        any = false;
+    for (unsigned int q = 0; q < nq; ++q)
+      if (status[q])
+        key[q] = '1', any = true;
+    if (!any)
+      {
+        release(c);
+        return;
+      }
+    if (cell_slot[c] >= 0 && slots[cell_slot[c]].key == key)
+      return;
+    release(c);
+    const auto   found = slot_of_key.find(key);
+    unsigned int s;
+    if (found != slot_of_key.end())
+      s = found->second;
+    else
+      {
+        if (free_slots.empty())
+          {
+            s = slots.size();
+            slots.emplace_back();
+          }
+        else
+          {
+            s = free_slots.back();
+            free_slots.pop_back();
+          }
+        Slot &slot = slots[s];
+        slot.key   = key;
+        slot.users = 0;
+        slot.matrix.fill(0.);
+        for (unsigned int q = 0; q < nq; ++q)
+          if (status[q])
+            for (unsigned int a = 0; a < 16; ++a)
+              for (unsigned int b = 0; b < 16; ++b)
+                slot.matrix[16 * a + b] += point_matrices[q](a, b);
+        for (unsigned int a = 0; a < 16; ++a)
+          for (unsigned int b = 0; b < 16; ++b)
+            {
+              slot.columns_double[16 * b + a] = slot.matrix[16 * a + b];
+              slot.columns_float[16 * b + a]  = float(slot.matrix[16 * a + b]);
+            }
+        slot_of_key.emplace(key, s);
+      }
+    ++slots[s].users;
+    cell_slot[c] = s;
+  }
+
+
+
+  void
+  HermiteCellOperator::finish()
+  {
+    contact_cells.clear();
+    for (unsigned int j = 0; j < ny; ++j)
+      {
+        row_start[j] = contact_cells.size();
+        for (unsigned int i = 0; i < nx; ++i)
+          if (cell_slot[i + nx * j] >= 0)
+            contact_cells.push_back(i + nx * j);
+      }
+    row_start[ny] = contact_cells.size();
+  }
+
+
+
+  template <>
+  const float *
+  HermiteCellOperator::columns<float>(const Slot &slot) const
+  {
+    return slot.columns_float.data();
+  }
+  template <>
+  const double *
+  HermiteCellOperator::columns<double>(const Slot &slot) const
+  {
+    return slot.columns_double.data();
+  }
+  template <>
+  const std::array<std::array<std::array<float, 16>, 9>, 9> &
+  HermiteCellOperator::stencil<float>() const
+  {
+    return blocks_float;
+  }
+  template <>
+  const std::array<std::array<std::array<double, 16>, 9>, 9> &
+  HermiteCellOperator::stencil<double>() const
+  {
+    return blocks;
+  }
+  template <>
+  Vector<float> &
+  HermiteCellOperator::masked_vector<float>() const
+  {
+    return masked_float;
+  }
+  template <>
+  Vector<double> &
+  HermiteCellOperator::masked_vector<double>() const
+  {
+    return masked_double;
+  }
+
+
+
+  template <typename Number>
+  void
+  HermiteCellOperator::vmult(Vector<Number>       &dst,
+                             const Vector<Number> &src) const
+  {
+    using V = typename Lanes<Number>::type;
+    AssertDimension(src.size(), m());
+    dst.reinit(m(), true);
+    Vector<Number> &masked = masked_vector<Number>();
+    masked                 = src;
+    for (const size_type i : constrained_dofs)
+      masked[i] = Number(0);
+    const Number      *x      = masked.begin();
+    Number            *y      = dst.begin();
+    const unsigned int row    = 4 * (nx + 1);
+    const auto        &blocks = stencil<Number>();
+    const auto         kind1  = [](unsigned int i, unsigned int n) {
+      return i == 0 ? 0u : (i == n ? 2u : 1u);
+    };
+
+    // C part: the vertex stencil, row by row of vertices.
+    V interior[9][4];
+    for (unsigned int d = 0; d < 9; ++d)
+      for (unsigned int kp = 0; kp < 4; ++kp)
+        interior[d][kp] = load4<V>(&blocks[4][d][4 * kp]);
+    const auto any_vertex = [&](const unsigned int i, const unsigned int j) {
+      const auto &b  = blocks[kind1(i, nx) + 3 * kind1(j, ny)];
+      V           yv = {};
+      for (int dy = (j > 0 ? -1 : 0); dy <= (j < ny ? 1 : 0); ++dy)
+        for (int dx = (i > 0 ? -1 : 0); dx <= (i < nx ? 1 : 0); ++dx)
+          {
+            const Number *xw    = x + 4 * ((i + dx) + (nx + 1) * (j + dy));
+            const auto   &block = b[(dx + 1) + 3 * (dy + 1)];
+            for (unsigned int kp = 0; kp < 4; ++kp)
+              yv += load4<V>(&block[4 * kp]) * xw[kp];
+          }
+      store4(yv, y + 4 * (i + (nx + 1) * j));
+    };
+    const int off[9] = {-int(row) - 4, -int(row), -int(row) + 4,
+                        -4,            0,         4,
+                        int(row) - 4,  int(row),  int(row) + 4};
+    parallel::apply_to_subranges(
+      0u,
+      ny + 1,
+      [&](const unsigned int j_begin, const unsigned int j_end) {
+        for (unsigned int j = j_begin; j < j_end; ++j)
+          {
+            any_vertex(0, j);
+            if (j == 0 || j == ny)
+              for (unsigned int i = 1; i < nx; ++i)
+                any_vertex(i, j);
+            else
+              for (unsigned int i = 1; i < nx; ++i)
+                {
+                  const Number *xv = x + 4 * (i + (nx + 1) * j);
+                  V             yv = {};
+                  for (unsigned int d = 0; d < 9; ++d)
+                    {
+                      const Number *xw = xv + off[d];
+                      yv += interior[d][0] * xw[0];
+                      yv += interior[d][1] * xw[1];
+                      yv += interior[d][2] * xw[2];
+                      yv += interior[d][3] * xw[3];
+                    }
+                  store4(yv, y + 4 * (i + (nx + 1) * j));
+                }
+            any_vertex(nx, j);
+          }
+      },
+      16);
+
+    // K_c part: every other row of cells at a time (rows of cells two apart
+    // share no vertex).
+    for (unsigned int parity = 0; parity < 2; ++parity)
+      parallel::apply_to_subranges(
+        0u,
+        (ny + 1 - parity) / 2,
+        [&](const unsigned int r_begin, const unsigned int r_end) {
+          for (unsigned int r = r_begin; r < r_end; ++r)
+            {
+              const unsigned int j = 2 * r + parity;
+              for (unsigned int e = row_start[j]; e < row_start[j + 1]; ++e)
+                {
+                  const unsigned int c  = contact_cells[e];
+                  const unsigned int v0 = 4 * (c % nx + (nx + 1) * j);
+                  const unsigned int start[4] = {v0,
+                                                 v0 + 4,
+                                                 v0 + row,
+                                                 v0 + row + 4};
+                  const Number *cols = columns<Number>(slots[cell_slot[c]]);
+                  V             yv[4] = {};
+                  for (unsigned int w = 0; w < 4; ++w)
+                    for (unsigned int kp = 0; kp < 4; ++kp)
+                      {
+                        const Number  xm  = x[start[w] + kp];
+                        const Number *col = cols + 16 * (4 * w + kp);
+                        yv[0] += load4<V>(col) * xm;
+                        yv[1] += load4<V>(col + 4) * xm;
+                        yv[2] += load4<V>(col + 8) * xm;
+                        yv[3] += load4<V>(col + 12) * xm;
+                      }
+                  for (unsigned int v = 0; v < 4; ++v)
+                    store4(load4<V>(y + start[v]) + yv[v], y + start[v]);
+                }
+            }
+        },
+        8);
+
+    for (std::size_t e = 0; e < constrained_dofs.size(); ++e)
+      y[constrained_dofs[e]] =
+        Number(constrained_values[e]) * src[constrained_dofs[e]];
+  }
+
+
+
+  template <typename Number>
+  void
+  HermiteCellOperator::diagonal(Vector<Number> &d) const
+  {
+    d.reinit(m());
+    const auto kind1 = [](unsigned int i, unsigned int n) {
+      return i == 0 ? 0u : (i == n ? 2u : 1u);
+    };
+    for (unsigned int j = 0; j <= ny; ++j)
+      for (unsigned int i = 0; i <= nx; ++i)
+        {
+          const auto &block = blocks[kind1(i, nx) + 3 * kind1(j, ny)][4];
+          for (unsigned int k = 0; k < 4; ++k)
+            d[4 * (i + (nx + 1) * j) + k] = block[5 * k];
+        }
+    for (const unsigned int c : contact_cells)
+      {
+        const unsigned int i = c % nx, j = c / nx;
+        const double      *k_c = contact_matrix(c);
+        for (unsigned int v = 0; v < 4; ++v)
+          for (unsigned int k = 0; k < 4; ++k)
+            d[4 * (i + v % 2 + (nx + 1) * (j + v / 2)) + k] +=
+              Number(k_c[17 * (4 * v + k)]);
+      }
+    for (std::size_t e = 0; e < constrained_dofs.size(); ++e)
+      d[constrained_dofs[e]] = Number(constrained_values[e]);
+  }
+
+
+
+  double
+  HermiteCellOperator::el(const size_type i, const size_type j) const
+  {
+    AssertThrow(i == j,
+                ExcMessage("HermiteCellOperator gives diagonal entries only"));
+    Vector<double> d;
+    diagonal(d);
+    return d[i];
+  }
+
+
+
+  template void
+  HermiteCellOperator::vmult<float>(Vector<float> &,
+                                    const Vector<float> &) const;
+  template void
+  HermiteCellOperator::vmult<double>(Vector<double> &,
+                                     const Vector<double> &) const;
+  template void
+  HermiteCellOperator::diagonal<float>(Vector<float> &) const;
+  template void
+  HermiteCellOperator::diagonal<double>(Vector<double> &) const;
+
 
   class HermiteMultigrid::Transfer : public MGTransferBase<LevelVector>
   {
@@ -52,44 +462,50 @@ namespace NitscheContact
 
 
 
+  /// The level operators: sparse matrices below the finest level, the
+  /// cell operator on it.
   class HermiteMultigrid::LevelMatrices : public MGMatrixBase<LevelVector>
   {
   public:
-    explicit LevelMatrices(const std::vector<FloatMatrix> &levels)
+    LevelMatrices(const std::vector<FloatMatrix>   &levels,
+                  const HermiteCellOperator &fine,
+                  const unsigned int                L)
       : levels(levels)
+      , fine(fine)
+      , L(L)
     {}
-    const SparseMatrix<float> &
-    operator[](const unsigned int level) const
-    {
-      return levels[level].matrix;
-    }
     void
     vmult(const unsigned int level,
           LevelVector       &dst,
           const LevelVector &src) const override
     {
-      (*this)[level].vmult(dst, src);
+      if (level == L && L > 0)
+        fine.vmult(dst, src);
+      else
+        levels[level].matrix.vmult(dst, src);
     }
     void
     vmult_add(const unsigned int level,
               LevelVector       &dst,
               const LevelVector &src) const override
     {
-      (*this)[level].vmult_add(dst, src);
+      LevelVector t(dst.size());
+      vmult(level, t, src);
+      dst += t;
     }
     void
-    Tvmult(const unsigned int level,
-           LevelVector       &dst,
-           const LevelVector &src) const override
+    Tvmult(const unsigned int,
+           LevelVector &,
+           const LevelVector &) const override
     {
-      (*this)[level].Tvmult(dst, src);
+      AssertThrow(false, ExcNotImplemented());
     }
     void
-    Tvmult_add(const unsigned int level,
-               LevelVector       &dst,
-               const LevelVector &src) const override
+    Tvmult_add(const unsigned int,
+               LevelVector &,
+               const LevelVector &) const override
     {
-      (*this)[level].Tvmult_add(dst, src);
+      AssertThrow(false, ExcNotImplemented());
     }
     unsigned int
     get_minlevel() const override
@@ -99,11 +515,13 @@ namespace NitscheContact
     unsigned int
     get_maxlevel() const override
     {
-      return levels.size() - 1;
+      return L;
     }
 
   private:
-    const std::vector<FloatMatrix> &levels;
+    const std::vector<FloatMatrix>   &levels;
+    const HermiteCellOperator &fine;
+    const unsigned int                L;
   };
 
 
@@ -113,61 +531,91 @@ namespace NitscheContact
   class HermiteMultigrid::Smoother : public MGSmootherBase<LevelVector>
   {
   public:
-    using Jacobi    = DiagonalMatrix<LevelVector>;
-    using Chebyshev = PreconditionChebyshev<SparseMatrix<float>,
-                                            LevelVector,
-                                            Jacobi>;
+    using Jacobi = DiagonalMatrix<LevelVector>;
+    template <typename Operator>
+    using Chebyshev = PreconditionChebyshev<Operator, LevelVector, Jacobi>;
 
-    /// (Re)initialise the smoothers of levels [first, end).
+    /// (Re)initialise the smoothers of the levels 1 .. L.
     void
-    reinit(const LevelMatrices &matrices,
-           const unsigned int   first,
-           const unsigned int   end)
+    reinit(const std::vector<FloatMatrix>   &levels,
+           const HermiteCellOperator &fine,
+           const unsigned int                L)
     {
-      chebyshev.resize(end);
-      for (unsigned int l = std::max(first, 1u); l < end; ++l)
+      coarse_levels.resize(L);
+      for (unsigned int l = 1; l < L; ++l)
         {
-          const SparseMatrix<float>         &A = matrices[l];
-          typename Chebyshev::AdditionalData data;
-          data.preconditioner = std::make_shared<Jacobi>();
-          LevelVector &d      = data.preconditioner->get_vector();
+          const SparseMatrix<float> &A = levels[l].matrix;
+          auto data = settings<SparseMatrix<float>>();
+          LevelVector &d = data.preconditioner->get_vector();
           d.reinit(A.m());
           for (unsigned int i = 0; i < A.m(); ++i)
-            {
-              const float a = A.diag_element(i);
-              d[i]          = (a != 0.f) ? 1.f / a : 1.f;
-            }
-          // degree 4 measured best at 264k dofs: 2, 3, 4, 6 give 187, 139,
-          // 104, 85 Krylov iterations and 8.3, 8.2, 7.4, 9.2 s of solve
-          data.degree              = 4;
-          data.smoothing_range     = 20.;
-          data.eig_cg_n_iterations = 12;
-          chebyshev[l]             = std::make_unique<Chebyshev>();
-          chebyshev[l]->initialize(A, data);
+            d[i] = A.diag_element(i);
+          invert(d);
+          coarse_levels[l] = std::make_unique<Chebyshev<SparseMatrix<float>>>();
+          coarse_levels[l]->initialize(A, data);
         }
+      finest.reset();
+      if (L > 0)
+        {
+          auto data = settings<HermiteCellOperator>();
+          fine.diagonal(data.preconditioner->get_vector());
+          invert(data.preconditioner->get_vector());
+          finest = std::make_unique<Chebyshev<HermiteCellOperator>>();
+          finest->initialize(fine, data);
+        }
+      max_level = L;
     }
     void
     clear() override
     {
-      chebyshev.clear();
+      coarse_levels.clear();
+      finest.reset();
     }
     void
     smooth(const unsigned int level,
            LevelVector       &u,
            const LevelVector &rhs) const override
     {
-      chebyshev[level]->step(u, rhs);
+      if (level == max_level)
+        finest->step(u, rhs);
+      else
+        coarse_levels[level]->step(u, rhs);
     }
     void
     apply(const unsigned int level,
           LevelVector       &u,
           const LevelVector &rhs) const override
     {
-      chebyshev[level]->vmult(u, rhs);
+      if (level == max_level)
+        finest->vmult(u, rhs);
+      else
+        coarse_levels[level]->vmult(u, rhs);
     }
 
   private:
-    std::vector<std::unique_ptr<Chebyshev>> chebyshev;
+    template <typename Operator>
+    static typename Chebyshev<Operator>::AdditionalData
+    settings()
+    {
+      typename Chebyshev<Operator>::AdditionalData data;
+      data.preconditioner = std::make_shared<Jacobi>();
+      // degree 4 measured best at 264k dofs: 2, 3, 4, 6 give 187, 139,
+      // 104, 85 Krylov iterations and 8.3, 8.2, 7.4, 9.2 s of solve
+      data.degree              = 4;
+      data.smoothing_range     = 20.;
+      data.eig_cg_n_iterations = 12;
+      return data;
+    }
+    static void
+    invert(LevelVector &d)
+    {
+      for (auto &a : d)
+        a = (a != 0.f) ? 1.f / a : 1.f;
+    }
+
+    std::vector<std::unique_ptr<Chebyshev<SparseMatrix<float>>>> coarse_levels;
+    std::unique_ptr<Chebyshev<HermiteCellOperator>>       finest;
+    unsigned int                                                 max_level = 0;
   };
 
 
@@ -200,68 +648,6 @@ namespace NitscheContact
 
 
 
-  void
-  HermiteMultigrid::copy_matrix(const MatrixType &A,
-                                FloatMatrix      &F,
-                                const bool        new_offsets)
-  {
-    const Epetra_CrsMatrix &E      = A.trilinos_matrix();
-    const int               n_rows = E.NumMyRows();
-    AssertThrow(types::global_dof_index(n_rows) == A.m() && A.m() == A.n(),
-                ExcMessage("HermiteMultigrid runs on one process"));
-    int     n;
-    double *values;
-    int    *indices;
-    if (new_offsets)
-      {
-        // place of every column of a row within the row of F, by a scatter
-        // into an array indexed by column
-        std::vector<unsigned int>            place(A.n());
-        std::vector<types::global_dof_index> mark(A.n(),
-                                                  numbers::invalid_dof_index);
-        F.offset.clear();
-        F.offset.reserve(E.NumMyNonzeros());
-        for (int r = 0; r < n_rows; ++r)
-          {
-            const auto row = TrilinosWrappers::global_row_index(E, r);
-            const auto diag = F.pattern(row, row);
-            AssertThrow(diag != SparsityPattern::invalid_entry,
-                        ExcInternalError());
-            for (auto it = F.pattern.begin(row); it != F.pattern.end(row);
-                 ++it)
-              {
-                place[it->column()] = it->global_index() - diag;
-                mark[it->column()]  = row;
-              }
-            E.ExtractMyRowView(r, n, values, indices);
-            for (int k = 0; k < n; ++k)
-              {
-                const auto col = TrilinosWrappers::global_column_index(E, indices[k]);
-                AssertThrow(mark[col] == types::global_dof_index(row),
-                            ExcMessage("HermiteMultigrid: an entry of the "
-                                       "matrix is not in the pattern given "
-                                       "to setup()"));
-                F.offset.push_back(place[col]);
-              }
-          }
-      }
-    AssertThrow(F.offset.size() == std::size_t(E.NumMyNonzeros()),
-                ExcMessage("HermiteMultigrid: the matrix pattern changed "
-                           "without a new setup()"));
-    std::size_t e = 0;
-    for (int r = 0; r < n_rows; ++r)
-      {
-        E.ExtractMyRowView(r, n, values, indices);
-        // deal.II stores the diagonal first and a row contiguously
-        float *row =
-          &F.matrix.diag_element(TrilinosWrappers::global_row_index(E, r));
-        for (int k = 0; k < n; ++k, ++e)
-          row[F.offset[e]] = static_cast<float>(values[k]);
-      }
-  }
-
-
-
   HermiteMultigrid::HermiteMultigrid(const FE_BicubicHermite<2> &fe,
                                      MPI_Comm                    comm)
     : fe(fe)
@@ -281,7 +667,6 @@ namespace NitscheContact
     const Tensor<1, 2>                         &h,
     const std::vector<types::global_dof_index> &vertex_dofs,
     const std::vector<bool>                    &constrained,
-    const DynamicSparsityPattern               &fine_pattern,
     const unsigned int                          max_coarse_dofs)
   {
     // (objects that point to the old level matrices and patterns go first)
@@ -291,9 +676,8 @@ namespace NitscheContact
     level_matrices.reset();
     transfer.reset();
     level_double.clear();
-    fine_matrix        = nullptr;
-    fine_pattern_ready = false;
-    fine_vertex_dofs   = vertex_dofs;
+    status_of_levels.clear();
+    fine_vertex_dofs = vertex_dofs;
 
     // The level sizes, coarsest first.
     L   = 0;
@@ -302,21 +686,22 @@ namespace NitscheContact
            4 * (nx0 + 1) * (ny0 + 1) > max_coarse_dofs)
       nx0 /= 2, ny0 /= 2, ++L;
 
-    const types::global_dof_index n_fine = constrained.size();
+    AssertThrow(constrained.size() == vertex_dofs.size() &&
+                  vertex_dofs.size() == 4 * std::size_t(nx + 1) * (ny + 1),
+                ExcMessage("HermiteMultigrid: four dofs per vertex expected"));
     level_sets.assign(L + 1, IndexSet());
     for (unsigned int l = 0; l <= L; ++l)
       level_sets[l] =
-        complete_index_set(l == L ? n_fine :
-                                    4 * ((nx0 << l) + 1) * ((ny0 << l) + 1));
+        complete_index_set(4 * ((nx0 << l) + 1) * ((ny0 << l) + 1));
 
     // Dof index of dof k at vertex (i, j) of level l: structured numbering
-    // below the finest level. The constraint pattern of a vertex is the one
-    // of the same vertex on the finest level.
+    // on every level (the V-cycle permutes from and to the DoFHandler
+    // numbering of the finest level). The constraint pattern of a vertex
+    // is the one of the same vertex on the finest level.
     const auto index = [&](unsigned int l, unsigned int i, unsigned int j,
                            unsigned int k) -> types::global_dof_index {
       const unsigned int n = (nx0 << l) + 1;
-      return (l == L) ? vertex_dofs[4 * (i + (nx + 1) * j) + k] :
-                        4 * (i + n * j) + k;
+      return 4 * (i + n * j) + k;
     };
     level_constrained.resize(L + 1);
     for (unsigned int l = 0; l <= L; ++l)
@@ -340,10 +725,26 @@ namespace NitscheContact
     // FloatMatrix objects must not move)
     prolong_f  = std::vector<FloatMatrix>(L);
     restrict_f = std::vector<FloatMatrix>(L);
-    levels     = std::vector<FloatMatrix>(L + 1);
-    levels[L].pattern.copy_from(fine_pattern);
-    levels[L].matrix.reinit(levels[L].pattern);
+    levels     = std::vector<FloatMatrix>(std::max(L, 1u));
     local_prolongation.resize(L);
+    // Level matrix pattern: all couplings within a cell.
+    const auto make_level_pattern = [&](const unsigned int l) {
+      const unsigned int     ncx = nx0 << l, ncy = ny0 << l;
+      DynamicSparsityPattern lsp(level_sets[l].size());
+      types::global_dof_index g[16];
+      for (unsigned int jc = 0; jc < ncy; ++jc)
+        for (unsigned int ic = 0; ic < ncx; ++ic)
+          {
+            for (unsigned int a = 0; a < 16; ++a)
+              g[a] = index(l, ic + (a / 4) % 2, jc + a / 8, a % 4);
+            for (unsigned int a = 0; a < 16; ++a)
+              lsp.add_entries(g[a], g, g + 16, true);
+          }
+      levels[l].pattern.copy_from(lsp);
+      levels[l].matrix.reinit(levels[l].pattern);
+    };
+    if (L == 0)
+      make_level_pattern(0);
     std::vector<double>              values;
     std::vector<Tensor<1, 2>>        grads;
     std::vector<Tensor<2, 2>>        hessians;
@@ -441,19 +842,7 @@ namespace NitscheContact
                                hessians[m][0][1];
             }
 
-        // Level matrix pattern: all couplings within a cell.
-        DynamicSparsityPattern lsp(level_sets[l].size());
-        types::global_dof_index g[16];
-        for (unsigned int jc = 0; jc < ncy; ++jc)
-          for (unsigned int ic = 0; ic < ncx; ++ic)
-            {
-              for (unsigned int a = 0; a < 16; ++a)
-                g[a] = index(l, ic + (a / 4) % 2, jc + a / 8, a % 4);
-              for (unsigned int a = 0; a < 16; ++a)
-                lsp.add_entries(g[a], g, g + 16, true);
-            }
-        levels[l].pattern.copy_from(lsp);
-        levels[l].matrix.reinit(levels[l].pattern);
+        make_level_pattern(l);
       }
     // double-precision level matrices (l < L; the single level when L = 0)
     level_double = std::vector<SparseMatrix<double>>(std::max(L, 1u));
@@ -461,7 +850,7 @@ namespace NitscheContact
       level_double[l].reinit(levels[l].pattern);
 
     transfer       = std::make_unique<Transfer>(prolong_f, restrict_f);
-    level_matrices = std::make_unique<LevelMatrices>(levels);
+    level_matrices = std::make_unique<LevelMatrices>(levels, fine, L);
     smoother       = std::make_unique<Smoother>();
     coarse         = std::make_unique<CoarseSolver>();
   }
@@ -571,45 +960,21 @@ namespace NitscheContact
 
 
   void
-  HermiteMultigrid::add_and_finish(const MatrixType                &A,
-                                   const std::vector<unsigned int> &cells,
+  HermiteMultigrid::add_and_finish(const std::vector<unsigned int> &cells,
                                    const std::vector<double>       &matrices)
   {
-    if (L > 0)
-      {
-        std::vector<unsigned int> children = cells, parents;
-        std::vector<double>       child_matrices = matrices, parent_matrices;
-        for (unsigned int e = 0; e < children.size(); ++e)
-          remove_constrained(L, children[e], &child_matrices[256 * e]);
-        for (unsigned int l = L; l-- > 0;)
-          {
-            restrict_cells(l, children, child_matrices, parents,
-                           parent_matrices);
-            add_cells(l, parents, parent_matrices);
-            children.swap(parents);
-            child_matrices.swap(parent_matrices);
-          }
-      }
-    fine_matrix = &A;
-    copy_matrix(A, levels[L], !fine_pattern_ready);
-    fine_pattern_ready = true;
+    std::vector<unsigned int> children = cells, parents;
+    std::vector<double>       child_matrices = matrices, parent_matrices;
+    for (unsigned int e = 0; e < children.size(); ++e)
+      remove_constrained(L, children[e], &child_matrices[256 * e]);
     if (L == 0)
+      add_cells(0, children, child_matrices);
+    for (unsigned int l = L; l-- > 0;)
       {
-        // one level: the coarse solver factorises A itself
-        const Epetra_CrsMatrix &E = A.trilinos_matrix();
-        level_double[0] = 0.;
-        int     n;
-        double *values;
-        int    *indices;
-        for (int r = 0; r < E.NumMyRows(); ++r)
-          {
-            E.ExtractMyRowView(r, n, values, indices);
-            for (int k = 0; k < n; ++k)
-              level_double[0].set(TrilinosWrappers::global_row_index(E, r),
-                                TrilinosWrappers::global_column_index(
-                                  E, indices[k]),
-                                values[k]);
-          }
+        restrict_cells(l, children, child_matrices, parents, parent_matrices);
+        add_cells(l, parents, parent_matrices);
+        children.swap(parents);
+        child_matrices.swap(parent_matrices);
       }
     // The single-precision level matrices of the V-cycle from the double
     // ones (so that rounding does not accumulate over the updates: on
@@ -617,7 +982,7 @@ namespace NitscheContact
     // part by orders of magnitude before the point leaves contact).
     for (unsigned int l = 0; l < L; ++l)
       levels[l].matrix.copy_from(level_double[l]);
-    smoother->reinit(*level_matrices, 1, L + 1);
+    smoother->reinit(levels, fine, L);
     coarse->reinit(level_double[0]);
     if (!multigrid)
       multigrid = std::make_unique<Multigrid<LevelVector>>(
@@ -627,17 +992,77 @@ namespace NitscheContact
 
 
   void
-  HermiteMultigrid::reinit(const MatrixType                &A,
-                           const FullMatrix<double>        &cell_matrix,
-                           const std::vector<unsigned int> &cells,
-                           const std::vector<double>       &cell_matrices)
+  HermiteMultigrid::set_matrices(
+    const FullMatrix<double>              &cell_matrix,
+    const std::vector<FullMatrix<double>> &point_matrices)
   {
     Assert(transfer, ExcMessage("HermiteMultigrid::setup() first"));
-    AssertDimension(cell_matrices.size(), 256 * cells.size());
     AssertThrow(cell_matrix.m() == 16 && cell_matrix.n() == 16,
                 ExcDimensionMismatch(cell_matrix.m(), 16));
-    for (unsigned int l = 0; l < L; ++l)
+    for (const auto &m : point_matrices)
+      AssertThrow(m.m() == 16 && m.n() == 16, ExcDimensionMismatch(m.m(), 16));
+    constant_cell_matrix = cell_matrix;
+    nq                   = point_matrices.size();
+    fine.reinit(nx0 << L, ny0 << L, cell_matrix, point_matrices,
+                level_constrained[L]);
+    // (no point active yet: on constrained dofs the diagonal stays)
+    fine.diagonal(fine_diagonal);
+    status_of_levels.clear();
+  }
+
+
+
+  void
+  HermiteMultigrid::set_status(const std::vector<unsigned char> &status)
+  {
+    const std::size_t n_cells = std::size_t(nx0 << L) * (ny0 << L);
+    AssertThrow(nq > 0 && status.size() == n_cells * nq,
+                ExcMessage("HermiteMultigrid::set_status: " +
+                           std::to_string(status.size()) +
+                           " point states for " + std::to_string(n_cells) +
+                           " cells of " + std::to_string(nq) + " points"));
+    if (status_of_levels.empty())
+      {
+        for (std::size_t c = 0; c < n_cells; ++c)
+          fine.set_cell(c, &status[nq * c]);
+        fine.finish();
+        build_levels();
+      }
+    else
+      {
+        // the differences of the contact matrices of the changed cells
+        std::vector<unsigned int> listed;
+        std::vector<double>       differences;
+        for (std::size_t c = 0; c < n_cells; ++c)
+          {
+            const unsigned char *now = &status[nq * c];
+            if (std::equal(now, now + nq, &status_of_levels[nq * c]))
+              continue;
+            const std::size_t e = differences.size();
+            differences.resize(e + 256, 0.);
+            if (const double *before = fine.contact_matrix(c))
+              for (unsigned int k = 0; k < 256; ++k)
+                differences[e + k] -= before[k];
+            fine.set_cell(c, now);
+            if (const double *after = fine.contact_matrix(c))
+              for (unsigned int k = 0; k < 256; ++k)
+                differences[e + k] += after[k];
+            listed.push_back(c);
+          }
+        fine.finish();
+        add_and_finish(listed, differences);
+      }
+    status_of_levels = status;
+  }
+
+
+
+  void
+  HermiteMultigrid::build_levels()
+  {
+    for (unsigned int l = 0; l < level_double.size(); ++l)
       level_double[l] = 0.;
+    const FullMatrix<double> &cell_matrix = constant_cell_matrix;
 
     // The part that is the same on every cell. A cell without constrained
     // dofs has the same restricted matrix ('interior') as every other such
@@ -715,9 +1140,26 @@ namespace NitscheContact
         boundary_matrices.swap(parent_matrices);
       }
 
-    // Constrained coarse dofs: the diagonal entry of the same dof of the
-    // finest level.
-    for (unsigned int l = 0; l < L; ++l)
+    if (L == 0)
+      {
+        // a single level: the cell matrices themselves
+        std::vector<char> listed(std::size_t(nx0) * ny0, 0);
+        for (const unsigned int c : boundary)
+          listed[c] = 1;
+        for (unsigned int c = 0; c < nx0 * ny0; ++c)
+          if (!listed[c])
+            {
+              boundary.push_back(c);
+              boundary_matrices.insert(boundary_matrices.end(),
+                                       interior.begin(),
+                                       interior.end());
+            }
+        add_cells(0, boundary, boundary_matrices);
+      }
+
+    // Constrained dofs: on every level the diagonal entry of the same dof
+    // of the finest level.
+    for (unsigned int l = 0; l < level_double.size(); ++l)
       {
         const unsigned int n = (nx0 << l) + 1, m = (ny0 << l) + 1,
                            s = L - l;
@@ -727,50 +1169,82 @@ namespace NitscheContact
             for (unsigned int k = 0; k < 4; ++k)
               if (level_constrained[l][4 * (i + n * j) + k])
                 {
-                  const double d = A.diag_element(
-                    fine_vertex_dofs[4 * ((i << s) + nf * (j << s)) + k]);
                   const types::global_dof_index g = 4 * (i + n * j) + k;
-                  level_double[l].add(g, g, d);
+                  level_double[l].add(
+                    g,
+                    g,
+                    fine_diagonal[4 * ((i << s) + nf * (j << s)) + k]);
                 }
       }
 
-    add_and_finish(A, cells, cell_matrices);
+    // the contact matrices of the cells with active points
+    std::vector<unsigned int> cells;
+    std::vector<double>       matrices;
+    for (unsigned int c = 0; c < (nx0 << L) * (ny0 << L); ++c)
+      if (const double *k_c = fine.contact_matrix(c))
+        {
+          cells.push_back(c);
+          matrices.insert(matrices.end(), k_c, k_c + 256);
+        }
+    add_and_finish(cells, matrices);
   }
 
 
 
-  void
-  HermiteMultigrid::update(const MatrixType                &A,
-                           const std::vector<unsigned int> &cells,
-                           const std::vector<double>       &differences)
+  namespace
   {
-    Assert(multigrid, ExcMessage("HermiteMultigrid::reinit() first"));
-    AssertDimension(differences.size(), 256 * cells.size());
-    add_and_finish(A, cells, differences);
-  }
+    /// a fixed pseudo-random vector with entries in [-0.5, 0.5)
+    template <typename VectorType>
+    void
+    pseudo_random(VectorType &x, std::uint64_t state)
+    {
+      for (auto &a : x)
+        {
+          state = state * 6364136223846793005ull + 1442695040888963407ull;
+          a     = (state >> 11) * (1. / 9007199254740992.) - 0.5;
+        }
+    }
+  } // namespace
 
 
 
   double
-  HermiteMultigrid::galerkin_defect() const
+  HermiteMultigrid::galerkin_defect(const MatrixType &A) const
   {
-    Assert(multigrid, ExcMessage("HermiteMultigrid::reinit() first"));
+    Assert(multigrid, ExcMessage("HermiteMultigrid::set_status() first"));
     double defect = 0.;
+    // the finest operator against the assembled matrix
+    if (L > 0)
+      {
+        const IndexSet owned = complete_index_set(A.m());
+        VectorType     x(owned, A.get_mpi_communicator()),
+          y(owned, A.get_mpi_communicator());
+        pseudo_random(x, 4321);
+        A.vmult(y, x);
+        Vector<double> xs(fine.m()), ys(fine.m());
+        for (std::size_t s = 0; s < fine_vertex_dofs.size(); ++s)
+          xs[s] = x[fine_vertex_dofs[s]];
+        fine.vmult(ys, xs);
+        double diff = 0., norm = 0.;
+        for (std::size_t s = 0; s < fine_vertex_dofs.size(); ++s)
+          {
+            const double a = y[fine_vertex_dofs[s]];
+            diff += (ys[s] - a) * (ys[s] - a);
+            norm += a * a;
+          }
+        defect = std::sqrt(diff / norm);
+      }
     for (unsigned int l = 0; l < L; ++l)
       {
-        const unsigned int n = levels[l].matrix.m();
-        LevelVector        x(n), y(n), z(n), p(levels[l + 1].matrix.m()),
-          q(levels[l + 1].matrix.m());
-        // a fixed pseudo-random vector (linear congruential)
-        std::uint64_t state = 12345 + l;
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            state = state * 6364136223846793005ull + 1442695040888963407ull;
-            x[i]  = float((state >> 11) * (1. / 9007199254740992.) - 0.5);
-          }
+        const unsigned int n = level_sets[l].size(), nf = level_sets[l + 1].size();
+        LevelVector        x(n), y(n), z(n), p(nf), q(nf);
+        pseudo_random(x, 12345 + l);
         levels[l].matrix.vmult(y, x);
         prolong_f[l].matrix.vmult(p, x);
-        levels[l + 1].matrix.vmult(q, p);
+        if (l + 1 == L)
+          fine.vmult(q, p);
+        else
+          levels[l + 1].matrix.vmult(q, p);
         restrict_f[l].matrix.vmult(z, q);
         z -= y;
         defect = std::max(defect, double(z.l2_norm() / y.l2_norm()));
@@ -781,7 +1255,7 @@ namespace NitscheContact
 
 
   void
-  HermiteMultigrid::vmult(VectorType &dst, const VectorType &src) const
+  HermiteMultigrid::vmult(Vector<double> &dst, const Vector<double> &src) const
   {
     if (multigrid->defect.max_level() != L)
       multigrid->defect.resize(0, L);
@@ -791,8 +1265,7 @@ namespace NitscheContact
     d.reinit(level_sets[L].size(), true);
     std::copy(src.begin(), src.end(), d.begin());
     multigrid->vcycle();
-    std::copy(multigrid->solution[L].begin(),
-              multigrid->solution[L].end(),
-              dst.begin());
+    const LevelVector &u = multigrid->solution[L];
+    std::copy(u.begin(), u.end(), dst.begin());
   }
 } // namespace NitscheContact

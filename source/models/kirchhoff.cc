@@ -374,11 +374,20 @@ namespace NitscheContact
         std::copy(dofs.begin(), dofs.end(), cell_dofs.begin() + 16 * c);
       }
 
-    DynamicSparsityPattern dsp(dof_handler.n_dofs());
-    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
-    const IndexSet owned = complete_index_set(dof_handler.n_dofs());
-    system_matrix.reinit(owned, owned, dsp, comm);
-    constant_matrix.reinit(owned, owned, dsp, comm);
+    // The assembled Newton matrix: for the direct solver, and with the
+    // multigrid only to check it (the multigrid applies the Newton matrix
+    // from its cell matrices).
+    assembled_matrix = !use_multigrid || check_multigrid;
+    system_matrix.clear();
+    constant_matrix.clear();
+    if (assembled_matrix)
+      {
+        DynamicSparsityPattern dsp(dof_handler.n_dofs());
+        DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+        const IndexSet owned = complete_index_set(dof_handler.n_dofs());
+        system_matrix.reinit(owned, owned, dsp, comm);
+        constant_matrix.reinit(owned, owned, dsp, comm);
+      }
     rhs.reinit(dof_handler.n_dofs());
     // assemble() distributes residual and matrix separately, which needs
     // homogeneous constraints (all edge conditions of the model are).
@@ -389,8 +398,8 @@ namespace NitscheContact
       {
         // finest-level dof of (vertex (i, j), derivative k), from the cells
         // in lexicographic order (local dof 4 v + k, v = vx + 2 vy)
-        std::vector<types::global_dof_index> vertex_dofs(4 * (nx + 1) *
-                                                         (ny + 1));
+        std::vector<types::global_dof_index> &vertex_dofs = structured_dofs;
+        vertex_dofs.resize(4 * (nx + 1) * (ny + 1));
         for (unsigned int iy = 0; iy < ny; ++iy)
           for (unsigned int ix = 0; ix < nx; ++ix)
             for (unsigned int v = 0; v < 4; ++v)
@@ -403,26 +412,29 @@ namespace NitscheContact
         if (!multigrid)
           multigrid = std::make_unique<HermiteMultigrid>(fe, comm);
         multigrid->setup(nx, ny, Tensor<1, 2>({hx, hy}), vertex_dofs,
-                         constrained, dsp);
-        multigrid_ready = false;
+                         constrained);
       }
 
     build_cell_kit();
 
-    {
-      constant_cell_matrix = kit.bending;
-      constant_cell_matrix.add(1., kit.contact_inactive);
-      const FullMatrix<double> &m = constant_cell_matrix;
-      std::vector<types::global_dof_index> dofs(16);
-      for (unsigned int c = 0; c < cells.size(); ++c)
-        {
-          std::copy(cell_dofs.begin() + 16 * c,
-                    cell_dofs.begin() + 16 * (c + 1),
-                    dofs.begin());
-          constraints.distribute_local_to_global(m, dofs, constant_matrix);
-        }
-      constant_matrix.compress(VectorOperation::add);
-    }
+    constant_cell_matrix = kit.bending;
+    constant_cell_matrix.add(1., kit.contact_inactive);
+    if (assembled_matrix)
+      {
+        std::vector<types::global_dof_index> dofs(16);
+        for (unsigned int c = 0; c < cells.size(); ++c)
+          {
+            std::copy(cell_dofs.begin() + 16 * c,
+                      cell_dofs.begin() + 16 * (c + 1),
+                      dofs.begin());
+            constraints.distribute_local_to_global(constant_cell_matrix,
+                                                   dofs,
+                                                   constant_matrix);
+          }
+        constant_matrix.compress(VectorOperation::add);
+      }
+    if (use_multigrid)
+      multigrid->set_matrices(constant_cell_matrix, kit.contact_switch);
 
     // Load and obstacle at the quadrature points (cached: parsing is slow).
     const unsigned int nq = quadrature.size();
@@ -894,22 +906,43 @@ namespace NitscheContact
   KirchhoffModel::assemble_matrix(const std::vector<unsigned char> &status)
   {
     const unsigned int nq = quadrature.size();
-    system_matrix.copy_from(constant_matrix);
-    std::vector<types::global_dof_index> dofs(16);
-    FullMatrix<double>                   cell_matrix(16, 16);
-    for (unsigned int c = 0; c < cells.size(); ++c)
+    if (assembled_matrix)
       {
-        if (!active_contact_matrix(&status[std::size_t(c) * nq], cell_matrix))
-          continue;
-        std::copy(cell_dofs.begin() + 16 * c,
-                  cell_dofs.begin() + 16 * (c + 1),
-                  dofs.begin());
-        // row and column form: no second diagonal entry on constrained
-        // rows (constant_matrix has them already)
-        constraints.distribute_local_to_global(cell_matrix, dofs, dofs,
-                                               system_matrix);
+        system_matrix.copy_from(constant_matrix);
+        std::vector<types::global_dof_index> dofs(16);
+        FullMatrix<double>                   cell_matrix(16, 16);
+        for (unsigned int c = 0; c < cells.size(); ++c)
+          {
+            if (!active_contact_matrix(&status[std::size_t(c) * nq],
+                                       cell_matrix))
+              continue;
+            std::copy(cell_dofs.begin() + 16 * c,
+                      cell_dofs.begin() + 16 * (c + 1),
+                      dofs.begin());
+            // row and column form: no second diagonal entry on constrained
+            // rows (constant_matrix has them already)
+            constraints.distribute_local_to_global(cell_matrix, dofs, dofs,
+                                                   system_matrix);
+          }
+        system_matrix.compress(VectorOperation::add);
       }
-    system_matrix.compress(VectorOperation::add);
+    if (use_multigrid)
+      {
+        // The multigrid applies the Newton matrix from its cell matrices,
+        // and its coarse levels follow it exactly: Galerkin products, cell
+        // by cell, on the first matrix of a mesh; then updates by the
+        // contact matrices of the cells whose contact status changed.
+        multigrid->set_status(status);
+        if (check_multigrid)
+          {
+            const double defect = multigrid->galerkin_defect(system_matrix);
+            AssertThrow(defect < 1e-4,
+                        ExcMessage("internal error: the multigrid operators "
+                                   "are not the Newton matrix and its "
+                                   "Galerkin products (relative defect " +
+                                   number_to_string(defect) + ")"));
+          }
+      }
   }
 
 
@@ -917,64 +950,9 @@ namespace NitscheContact
   unsigned int
   KirchhoffModel::solve_linear()
   {
-    const IndexSet owned = complete_index_set(dof_handler.n_dofs());
-    TrilinosWrappers::MPI::Vector b(owned, comm), x(owned, comm);
-    double *bp = b.trilinos_vector()[0];
-    std::copy(rhs.begin(), rhs.end(), bp);
-
     unsigned int linear_iterations = 0;
     if (use_multigrid)
       {
-        // The coarse levels follow the Newton matrix exactly: Galerkin
-        // products, cell by cell, on the first solve of a mesh; then
-        // updates by the contact matrices of the cells whose contact status
-        // changed since the last solve.
-        const unsigned int        nq = quadrature.size();
-        std::vector<unsigned int> listed;
-        std::vector<double>       matrices;
-        FullMatrix<double>        m(16, 16);
-        for (unsigned int c = 0; c < cells.size(); ++c)
-          {
-            const unsigned char *now = &previous_status[std::size_t(c) * nq];
-            if (multigrid_ready)
-              {
-                // the difference to the status of the last solve
-                const unsigned char *before =
-                  &multigrid_status[std::size_t(c) * nq];
-                if (std::equal(now, now + nq, before))
-                  continue;
-                m = 0.;
-                for (unsigned int q = 0; q < nq; ++q)
-                  if (now[q] != before[q])
-                    m.add(now[q] ? 1. : -1., kit.contact_switch[q]);
-              }
-            else
-              {
-                // the contact matrix of the active points
-                if (!active_contact_matrix(now, m))
-                  continue;
-              }
-            listed.push_back(c);
-            for (unsigned int i = 0; i < 16; ++i)
-              for (unsigned int j = 0; j < 16; ++j)
-                matrices.push_back(m(i, j));
-          }
-        if (multigrid_ready)
-          multigrid->update(system_matrix, listed, matrices);
-        else
-          multigrid->reinit(system_matrix, constant_cell_matrix, listed,
-                            matrices);
-        multigrid_ready  = true;
-        multigrid_status = previous_status;
-        if (check_multigrid)
-          {
-            const double defect = multigrid->galerkin_defect();
-            AssertThrow(defect < 1e-4,
-                        ExcMessage("internal error: the multigrid level "
-                                   "matrices are not the Galerkin products "
-                                   "of the Newton matrix (relative defect " +
-                                   number_to_string(defect) + ")"));
-          }
         // Inexact Newton: while contact points still change status the
         // step is only a direction towards the next status, and a loose
         // solve is enough. On a settled status the correction only has to
@@ -1000,21 +978,24 @@ namespace NitscheContact
                 std::max(krylov_tolerance,
                          0.1 * prm.tolerance * current / previous));
           }
+        // in the structured numbering of the multigrid
+        Vector<double> b(structured_dofs.size()), x(structured_dofs.size());
+        for (std::size_t k = 0; k < structured_dofs.size(); ++k)
+          b[k] = rhs[structured_dofs[k]];
+        const HermiteCellOperator &A = multigrid->fine_operator();
         SolverControl control(2000, tolerance * b.l2_norm());
         try
           {
             if (jacobian_is_symmetric())
               {
-                SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-                cg.solve(system_matrix, x, b, *multigrid);
+                SolverCG<Vector<double>> cg(control);
+                cg.solve(A, x, b, *multigrid);
               }
             else
               {
-                SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
-                  control,
-                  SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
-                    100));
-                gmres.solve(system_matrix, x, b, *multigrid);
+                SolverGMRES<Vector<double>> gmres(
+                  control, SolverGMRES<Vector<double>>::AdditionalData(100));
+                gmres.solve(A, x, b, *multigrid);
               }
           }
         catch (const SolverControl::NoConvergence &e)
@@ -1028,21 +1009,47 @@ namespace NitscheContact
               number_to_string(e.last_residual) +
               "); use 'Linear solver = direct'");
           }
-        linear_iterations  = control.last_step();
+        linear_iterations = control.last_step();
+        for (std::size_t k = 0; k < structured_dofs.size(); ++k)
+          increment[structured_dofs[k]] = x[k];
       }
     else
-      linear_iterations = factorization->solve(
-        system_matrix,
-        x,
-        b,
-        ReusedFactorization::change_of_newton_matrix(status_settled ? 0 : 1,
-                                                     false));
-
-    const double *xp = x.trilinos_vector()[0];
-    std::copy(xp, xp + increment.size(), increment.begin());
+      {
+        const IndexSet owned = complete_index_set(dof_handler.n_dofs());
+        TrilinosWrappers::MPI::Vector b(owned, comm), x(owned, comm);
+        std::copy(rhs.begin(), rhs.end(), b.begin());
+        linear_iterations = factorization->solve(
+          system_matrix,
+          x,
+          b,
+          ReusedFactorization::change_of_newton_matrix(status_settled ? 0 : 1,
+                                                       false));
+        std::copy(x.begin(), x.end(), increment.begin());
+      }
     constraints.distribute(increment);
     base = solution;
     return linear_iterations;
+  }
+
+
+
+  void
+  KirchhoffModel::jacobian_vmult(Vector<double>       &y,
+                                 const Vector<double> &x) const
+  {
+    if (assembled_matrix)
+      {
+        system_matrix.vmult(y, x);
+        return;
+      }
+    // the multigrid's operator of the status of the last solve
+    Vector<double> xs(structured_dofs.size()), ys(structured_dofs.size());
+    for (std::size_t k = 0; k < structured_dofs.size(); ++k)
+      xs[k] = x[structured_dofs[k]];
+    multigrid->fine_operator().vmult(ys, xs);
+    y.reinit(x.size());
+    for (std::size_t k = 0; k < structured_dofs.size(); ++k)
+      y[structured_dofs[k]] = ys[k];
   }
 
 

@@ -35,6 +35,7 @@
 #define nitsche_contact_models_hermite_multigrid_h
 
 #include <deal.II/base/mg_level_object.h>
+#include <deal.II/base/subscriptor.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/precondition.h>
@@ -51,10 +52,128 @@
 
 #include <array>
 #include <memory>
+#include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace NitscheContact
 {
+  /// The Kirchhoff Newton matrix of a uniform nx x ny mesh, applied without
+  /// storing it: A = sum over the cells of C + K_c, where C is one 16 x 16
+  /// cell matrix (bending and inactive contact) and K_c = sum of the
+  /// point matrices S_q over the active contact points q of cell c; rows
+  /// and columns of constrained dofs removed, and on the row of a
+  /// constrained dof the sum over its cells of |C_ii| (what
+  /// AffineConstraints::distribute_local_to_global makes of the same cell
+  /// matrices). Vectors are in the structured numbering 4 (i + (nx+1) j) + k
+  /// of dof k (w, w_x, w_y, w_xy) at vertex (i, j); cell (i, j) has index
+  /// i + nx j and local dofs 4 v + k, v = vx + 2 vy.
+  ///
+  /// The C part is a 9-point vertex stencil of 4 x 4 blocks (one set per
+  /// kind of vertex: interior, edge, corner), so a product reads and writes
+  /// only vectors, not matrix entries. K_c is the same matrix for every
+  /// cell with the same set of active points; each distinct set is stored
+  /// once (reference-counted), so a contact zone of fully active cells
+  /// costs one matrix. Products, in single or double precision, are
+  /// threaded over vertex rows (C) and over every other row of cells (K_c).
+  class HermiteCellOperator : public dealii::Subscriptor
+  {
+  public:
+    using size_type = dealii::types::global_dof_index;
+
+    /// C, the constrained dofs (structured numbering), the point matrices
+    /// S_q (nq of them), and no active point.
+    void
+    reinit(unsigned int                                   nx,
+           unsigned int                                   ny,
+           const dealii::FullMatrix<double>              &cell_matrix,
+           const std::vector<dealii::FullMatrix<double>> &point_matrices,
+           const std::vector<bool>                       &constrained);
+
+    /// Set the active points of cell c (status[q] != 0: point q active).
+    void
+    set_cell(unsigned int c, const unsigned char *status);
+
+    /// K_c of cell c (16 x 16, row-major, double; rows and columns of
+    /// constrained dofs not removed), nullptr if no point is active.
+    const double *
+    contact_matrix(unsigned int c) const
+    {
+      return cell_slot[c] < 0 ? nullptr : &slots[cell_slot[c]].matrix[0];
+    }
+
+    /// Call after set_cell() and before the next product.
+    void
+    finish();
+
+    /// dst = A src (float or double)
+    template <typename Number>
+    void
+    vmult(dealii::Vector<Number> &dst, const dealii::Vector<Number> &src) const;
+
+    /// The diagonal of A.
+    template <typename Number>
+    void
+    diagonal(dealii::Vector<Number> &d) const;
+
+    size_type
+    m() const
+    {
+      return 4 * size_type(nx + 1) * (ny + 1);
+    }
+    size_type
+    n() const
+    {
+      return m();
+    }
+    /// diagonal entries only (what PreconditionChebyshev may ask for)
+    double
+    el(size_type i, size_type j) const;
+
+  private:
+    struct Slot
+    {
+      std::string             key;
+      unsigned int            users = 0;
+      std::array<double, 256> matrix;
+      /// column-major copies for the products
+      std::array<float, 256>  columns_float;
+      std::array<double, 256> columns_double;
+    };
+    void
+    release(unsigned int c);
+    template <typename Number>
+    const Number *
+    columns(const Slot &slot) const;
+    template <typename Number>
+    const std::array<std::array<std::array<Number, 16>, 9>, 9> &
+    stencil() const;
+    template <typename Number>
+    dealii::Vector<Number> &
+    masked_vector() const;
+
+    unsigned int nx = 0, ny = 0, nq = 0;
+    /// blocks[kind][d][4 k' + k]: coupling of dof k of a vertex of kind
+    /// (x kind + 3 y kind; 0 = first, 1 = inner, 2 = last) to dof k' of its
+    /// neighbour d = (dx + 1) + 3 (dy + 1)
+    std::array<std::array<std::array<double, 16>, 9>, 9> blocks;
+    std::array<std::array<std::array<float, 16>, 9>, 9>  blocks_float;
+    std::vector<dealii::FullMatrix<double>> point_matrices;
+    std::vector<size_type>                  constrained_dofs;
+    std::vector<double>                     constrained_values;
+    std::vector<int>                        cell_slot;
+    std::vector<Slot>                       slots;
+    std::vector<unsigned int>               free_slots;
+    std::unordered_map<std::string, unsigned int> slot_of_key;
+    /// cells with active points, in order, and where each row of cells
+    /// starts in that list
+    std::vector<unsigned int> contact_cells, row_start;
+    mutable dealii::Vector<float>  masked_float;
+    mutable dealii::Vector<double> masked_double;
+  };
+
+
+
   class HermiteMultigrid
   {
   public:
@@ -70,8 +189,7 @@ namespace NitscheContact
     /// extents h. vertex_dofs[4 (i + (nx+1) j) + k] is the finest-level
     /// (DoFHandler) index of dof k (w, w_x, w_y, w_xy) at vertex (i, j);
     /// constrained[d] says whether that dof carries a homogeneous
-    /// constraint; fine_pattern is (or contains) the sparsity pattern of
-    /// the finest-level matrices. Levels are halved while both cell counts stay even and
+    /// constraint. Levels are halved while both cell counts stay even and
     /// the coarse problem has more than `max_coarse_dofs` dofs.
     void
     setup(unsigned int                                   nx,
@@ -79,44 +197,48 @@ namespace NitscheContact
           const dealii::Tensor<1, 2>                    &h,
           const std::vector<dealii::types::global_dof_index> &vertex_dofs,
           const std::vector<bool>                       &constrained,
-          const dealii::DynamicSparsityPattern          &fine_pattern,
           unsigned int max_coarse_dofs = 1500);
 
-    /// Take the first Newton matrix A of a mesh and build the level
-    /// matrices. A must be the sum over all cells of `cell_matrix` (the same
-    /// on every cell) and, on the listed cells, of the given cell matrices,
-    /// assembled with the constraints (rows and columns of constrained dofs
-    /// removed, any diagonal entry on constrained rows). Cell matrices are
-    /// 16 x 16, row-major, in the local dof order 4 v + k of setup()
-    /// (v = vx + 2 vy); the cell with lower-left vertex (i, j) has index
-    /// i + nx j. A is kept by reference until the next call.
+    /// The parts of the Newton matrix of the mesh: it is the sum over all
+    /// cells of `cell_matrix` and, for every active contact point q of a
+    /// cell, of point_matrices[q] (16 x 16, local dof order 4 v + k,
+    /// v = vx + 2 vy; cell (i, j) has index i + nx j), assembled with the
+    /// constraints (rows and columns of constrained dofs removed; on a
+    /// constrained row the diagonal entry of HermiteCellOperator). The next
+    /// set_status() builds the levels.
     void
-    reinit(const MatrixType                &A,
-           const dealii::FullMatrix<double> &cell_matrix,
-           const std::vector<unsigned int>  &cells,
-           const std::vector<double>        &cell_matrices);
+    set_matrices(const dealii::FullMatrix<double>              &cell_matrix,
+                 const std::vector<dealii::FullMatrix<double>> &point_matrices);
 
-    /// Take a Newton matrix A that differs from the one of the last
-    /// reinit() or update() only on the listed cells, by the given cell
-    /// matrices (same conventions). The level matrices are updated by the
-    /// restricted differences.
+    /// The contact status of the current Newton matrix: status[nq c + q]
+    /// != 0 if point q of cell c is active. The first call after
+    /// set_matrices() builds the Galerkin level matrices cell by cell;
+    /// later calls update them by the restricted contact matrices of the
+    /// cells whose status changed.
     void
-    update(const MatrixType                &A,
-           const std::vector<unsigned int> &cells,
-           const std::vector<double>       &differences);
+    set_status(const std::vector<unsigned char> &status);
 
     /// Largest relative deviation |A_l x - P_l^T A_{l+1} P_l x| / |A_l x|
     /// over the coarse levels l for a fixed pseudo-random x, computed with
     /// the global single-precision transfer matrices of the V-cycle (built
-    /// independently of the cell-by-cell restriction): about 1e-7 when the
-    /// level matrices are the Galerkin products of the current A.
+    /// independently of the cell-by-cell restriction), and of the finest
+    /// operator from A (the assembled Newton matrix of the current status):
+    /// about 1e-7 when all is consistent.
     double
-    galerkin_defect() const;
+    galerkin_defect(const MatrixType &A) const;
 
     /// One V-cycle applied to src (the preconditioner interface of the
-    /// deal.II Krylov solvers).
+    /// deal.II Krylov solvers), in the structured numbering of
+    /// HermiteCellOperator.
     void
-    vmult(VectorType &dst, const VectorType &src) const;
+    vmult(dealii::Vector<double> &dst, const dealii::Vector<double> &src) const;
+
+    /// The Newton matrix of the last set_status() (structured numbering).
+    const HermiteCellOperator &
+    fine_operator() const
+    {
+      return fine;
+    }
 
     unsigned int
     n_levels() const
@@ -136,22 +258,13 @@ namespace NitscheContact
     class Smoother;
     class CoarseSolver;
 
-    /// A single-precision copy of a (Trilinos) matrix. For square matrices
-    /// `offset` maps the e-th stored entry of the Trilinos matrix (row by
-    /// row) to its place in the deal.II row, counted from the diagonal,
-    /// which deal.II stores first, so that new values of a matrix with the
-    /// same pattern are copied without searching.
+    /// A single-precision level matrix with its pattern (a SparseMatrix
+    /// keeps a pointer to its pattern, so these must not move).
     struct FloatMatrix
     {
-      dealii::SparsityPattern       pattern;
-      dealii::SparseMatrix<float>   matrix;
-      std::vector<unsigned int>     offset;
+      dealii::SparsityPattern     pattern;
+      dealii::SparseMatrix<float> matrix;
     };
-
-    /// Copy the values of A into F, whose pattern contains that of A; with
-    /// new_offsets first compute F.offset.
-    static void
-    copy_matrix(const MatrixType &A, FloatMatrix &F, bool new_offsets);
 
     /// Zero the rows and columns of the constrained dofs of a level-l cell
     /// in a 16 x 16 cell matrix.
@@ -177,12 +290,17 @@ namespace NitscheContact
     add_cells(unsigned int                     l,
               const std::vector<unsigned int> &cells,
               const std::vector<double>       &matrices);
-    /// Add the fine differences to every coarse level, copy A, and
-    /// re-initialise the smoothers and the coarse solver.
+    /// Restrict the finest-level cell matrices to every coarse level and
+    /// add them there (L = 0: add them to the single level), then
+    /// re-initialise the single-precision copies, the smoothers and the
+    /// coarse solver.
     void
-    add_and_finish(const MatrixType                &A,
-                   const std::vector<unsigned int> &cells,
+    add_and_finish(const std::vector<unsigned int> &cells,
                    const std::vector<double>       &matrices);
+    /// The levels from the constant cell matrix and the contact matrices of
+    /// the status just set (first set_status() of a mesh).
+    void
+    build_levels();
 
     const FE_BicubicHermite<2> &fe;
     MPI_Comm                    comm;
@@ -198,16 +316,22 @@ namespace NitscheContact
     /// dof, parent dof) that gives the dofs of the child in position
     /// pos = px + 2 py of a level-l cell from the dofs of the cell
     std::vector<std::array<std::array<double, 256>, 4>> local_prolongation;
-    const MatrixType *fine_matrix = nullptr;
-    /// single-precision level matrices 0 .. L (level L: copy of A)
+    /// the finest level (level L): applied from its cell matrices; it
+    /// also keeps the contact matrix of every cell
+    HermiteCellOperator        fine;
+    dealii::FullMatrix<double> constant_cell_matrix;
+    /// diagonal of the finest level (structured numbering)
+    dealii::Vector<double>     fine_diagonal;
+    /// status of the current level matrices; empty: not built
+    std::vector<unsigned char> status_of_levels;
+    unsigned int               nq = 0;
+    /// single-precision level matrices 0 .. max(L, 1) - 1
     std::vector<FloatMatrix> levels;
-    /// the levels 0 .. L-1 in double precision, on the patterns of
-    /// `levels` (the updates accumulate here; level 0 is the coarse
-    /// solver's matrix); with L = 0 the single level
+    /// the same levels in double precision (the updates accumulate here;
+    /// level 0 is the coarse solver's matrix)
     std::vector<dealii::SparseMatrix<double>> level_double;
     /// single-precision prolongation (l -> l+1) and its transpose
     std::vector<FloatMatrix> prolong_f, restrict_f;
-    bool                     fine_pattern_ready = false;
 
     std::unique_ptr<Transfer>                  transfer;
     std::unique_ptr<LevelMatrices>             level_matrices;

@@ -109,10 +109,7 @@ namespace NitscheContact
     }
     void
     jacobian_vmult(dealii::Vector<double> &y,
-                   const dealii::Vector<double> &x) const
-    {
-      system_matrix.vmult(y, x);
-    }
+                   const dealii::Vector<double> &x) const;
     const dealii::AffineConstraints<double> &
     get_constraints() const
     {
@@ -215,14 +212,16 @@ namespace NitscheContact
     std::unique_ptr<HermiteMultigrid> multigrid;
     /// 'Linear solver = direct'
     std::unique_ptr<ReusedFactorization> factorization;
-    /// whether the multigrid levels hold the Galerkin matrices of the
-    /// matrix of multigrid_status (its contact status)
-    bool                       multigrid_ready = false;
     /// 'Check multigrid': verify the level matrices after every update
     bool                       check_multigrid = false;
+    /// whether system_matrix is assembled (direct solver, or the check of
+    /// the multigrid)
+    bool                       assembled_matrix = true;
+    /// multigrid: DoFHandler index of dof k at vertex (i, j) at the
+    /// structured index 4 (i + (nx+1) j) + k
+    std::vector<dealii::types::global_dof_index> structured_dofs;
     /// bending + inactive contact matrix of every cell
     dealii::FullMatrix<double> constant_cell_matrix;
-    std::vector<unsigned char> multigrid_status;
     /// prepare_line_search(): phi'(t) = line_constant + t line_linear +
     /// sum over the points whose contact state changes in (0, 1) of
     /// -coefficient * min(s0 + t ds, 0), stored as (s0, ds, coefficient)
