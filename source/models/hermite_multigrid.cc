@@ -428,24 +428,22 @@ namespace NitscheContact
   class HermiteMultigrid::Transfer : public MGTransferBase<LevelVector>
   {
   public:
-    Transfer(const std::vector<FloatMatrix> &p,
-             const std::vector<FloatMatrix> &r)
-      : p(p)
-      , r(r)
+    Transfer(const HermiteMultigrid &mg)
+      : mg(mg)
     {}
     void
     prolongate(const unsigned int to_level,
                LevelVector       &dst,
                const LevelVector &src) const override
     {
-      p[to_level - 1].matrix.vmult(dst, src);
+      prolongation(to_level).vmult(dst, src);
     }
     void
     prolongate_and_add(const unsigned int to_level,
                        LevelVector       &dst,
                        const LevelVector &src) const override
     {
-      p[to_level - 1].matrix.vmult_add(dst, src);
+      prolongation(to_level).vmult_add(dst, src);
     }
     void
     restrict_and_add(const unsigned int from_level,
@@ -453,11 +451,18 @@ namespace NitscheContact
                      const LevelVector &src) const override
     {
       // the transpose is stored, so that this product is threaded too
-      r[from_level - 1].matrix.vmult_add(dst, src);
+      (from_level > mg.L ? mg.top_restrict : mg.restrict_f[from_level - 1])
+        .matrix.vmult_add(dst, src);
     }
 
   private:
-    const std::vector<FloatMatrix> &p, &r;
+    const SparseMatrix<float> &
+    prolongation(const unsigned int to_level) const
+    {
+      return (to_level > mg.L ? mg.top_prolong : mg.prolong_f[to_level - 1])
+        .matrix;
+    }
+    const HermiteMultigrid &mg;
   };
 
 
@@ -467,22 +472,20 @@ namespace NitscheContact
   class HermiteMultigrid::LevelMatrices : public MGMatrixBase<LevelVector>
   {
   public:
-    LevelMatrices(const std::vector<FloatMatrix>   &levels,
-                  const HermiteCellOperator &fine,
-                  const unsigned int                L)
-      : levels(levels)
-      , fine(fine)
-      , L(L)
+    explicit LevelMatrices(const HermiteMultigrid &mg)
+      : mg(mg)
     {}
     void
     vmult(const unsigned int level,
           LevelVector       &dst,
           const LevelVector &src) const override
     {
-      if (level == L && L > 0)
-        fine.vmult(dst, src);
+      if (level > mg.L)
+        mg.top.matrix.vmult(dst, src);
+      else if (level == mg.L && mg.L > 0)
+        mg.fine.vmult(dst, src);
       else
-        levels[level].matrix.vmult(dst, src);
+        mg.levels[level].matrix.vmult(dst, src);
     }
     void
     vmult_add(const unsigned int level,
@@ -515,13 +518,11 @@ namespace NitscheContact
     unsigned int
     get_maxlevel() const override
     {
-      return L;
+      return mg.max_level();
     }
 
   private:
-    const std::vector<FloatMatrix>   &levels;
-    const HermiteCellOperator &fine;
-    const unsigned int                L;
+    const HermiteMultigrid &mg;
   };
 
 
@@ -535,61 +536,64 @@ namespace NitscheContact
     template <typename Operator>
     using Chebyshev = PreconditionChebyshev<Operator, LevelVector, Jacobi>;
 
-    /// (Re)initialise the smoothers of the levels 1 .. L.
+    /// (Re)initialise the smoothers of the levels 1 .. max_level().
     void
-    reinit(const std::vector<FloatMatrix>   &levels,
-           const HermiteCellOperator &fine,
-           const unsigned int                L)
+    reinit(const HermiteMultigrid &mg)
     {
-      coarse_levels.resize(L);
+      const unsigned int L = mg.L;
+      sparse.clear();
+      sparse.resize(mg.max_level() + 1);
+      const auto sparse_smoother = [&](const unsigned int         l,
+                                       const SparseMatrix<float> &A) {
+        auto         data = settings<SparseMatrix<float>>();
+        LevelVector &d    = data.preconditioner->get_vector();
+        d.reinit(A.m());
+        for (unsigned int i = 0; i < A.m(); ++i)
+          d[i] = A.diag_element(i);
+        invert(d);
+        sparse[l] = std::make_unique<Chebyshev<SparseMatrix<float>>>();
+        sparse[l]->initialize(A, data);
+      };
       for (unsigned int l = 1; l < L; ++l)
-        {
-          const SparseMatrix<float> &A = levels[l].matrix;
-          auto data = settings<SparseMatrix<float>>();
-          LevelVector &d = data.preconditioner->get_vector();
-          d.reinit(A.m());
-          for (unsigned int i = 0; i < A.m(); ++i)
-            d[i] = A.diag_element(i);
-          invert(d);
-          coarse_levels[l] = std::make_unique<Chebyshev<SparseMatrix<float>>>();
-          coarse_levels[l]->initialize(A, data);
-        }
-      finest.reset();
+        sparse_smoother(l, mg.levels[l].matrix);
+      if (mg.has_top)
+        sparse_smoother(L + 1, mg.top.matrix);
+      cell_level = L;
+      cell.reset();
       if (L > 0)
         {
           auto data = settings<HermiteCellOperator>();
-          fine.diagonal(data.preconditioner->get_vector());
+          mg.fine.diagonal(data.preconditioner->get_vector());
           invert(data.preconditioner->get_vector());
-          finest = std::make_unique<Chebyshev<HermiteCellOperator>>();
-          finest->initialize(fine, data);
+          cell = std::make_unique<Chebyshev<HermiteCellOperator>>();
+          cell->initialize(mg.fine, data);
         }
-      max_level = L;
     }
     void
     clear() override
     {
-      coarse_levels.clear();
-      finest.reset();
+      sparse.clear();
+      cell.reset();
     }
     void
     smooth(const unsigned int level,
            LevelVector       &u,
            const LevelVector &rhs) const override
     {
-      if (level == max_level)
-        finest->step(u, rhs);
+      if (level == cell_level)
+        cell->step(u, rhs);
       else
-        coarse_levels[level]->step(u, rhs);
+        sparse[level]->step(u, rhs);
     }
     void
     apply(const unsigned int level,
           LevelVector       &u,
           const LevelVector &rhs) const override
     {
-      if (level == max_level)
-        finest->vmult(u, rhs);
+      if (level == cell_level)
+        cell->vmult(u, rhs);
       else
-        coarse_levels[level]->vmult(u, rhs);
+        sparse[level]->vmult(u, rhs);
     }
 
   private:
@@ -613,9 +617,11 @@ namespace NitscheContact
         a = (a != 0.f) ? 1.f / a : 1.f;
     }
 
-    std::vector<std::unique_ptr<Chebyshev<SparseMatrix<float>>>> coarse_levels;
-    std::unique_ptr<Chebyshev<HermiteCellOperator>>       finest;
-    unsigned int                                                 max_level = 0;
+    /// levels 1 .. L-1 and the top level
+    std::vector<std::unique_ptr<Chebyshev<SparseMatrix<float>>>> sparse;
+    /// level L (the finest BFS level, if L > 0)
+    std::unique_ptr<Chebyshev<HermiteCellOperator>> cell;
+    unsigned int                                    cell_level = 0;
   };
 
 
@@ -645,6 +651,68 @@ namespace NitscheContact
     SparseDirectUMFPACK    solver;
     mutable Vector<double> x, b;
   };
+
+
+
+  void
+  HermiteMultigrid::copy_matrix(const MatrixType &A,
+                                FloatMatrix      &F,
+                                const bool        new_offsets)
+  {
+    const Epetra_CrsMatrix &E      = A.trilinos_matrix();
+    const int               n_rows = E.NumMyRows();
+    AssertThrow(types::global_dof_index(n_rows) == A.m() && A.m() == A.n(),
+                ExcMessage("HermiteMultigrid runs on one process"));
+    int     n;
+    double *values;
+    int    *indices;
+    if (new_offsets)
+      {
+        // place of every column of a row within the row of F, by a scatter
+        // into an array indexed by column
+        std::vector<unsigned int>            place(A.n());
+        std::vector<types::global_dof_index> mark(A.n(),
+                                                  numbers::invalid_dof_index);
+        F.offset.clear();
+        F.offset.reserve(E.NumMyNonzeros());
+        for (int r = 0; r < n_rows; ++r)
+          {
+            const auto row = TrilinosWrappers::global_row_index(E, r);
+            const auto diag = F.pattern(row, row);
+            AssertThrow(diag != SparsityPattern::invalid_entry,
+                        ExcInternalError());
+            for (auto it = F.pattern.begin(row); it != F.pattern.end(row);
+                 ++it)
+              {
+                place[it->column()] = it->global_index() - diag;
+                mark[it->column()]  = row;
+              }
+            E.ExtractMyRowView(r, n, values, indices);
+            for (int k = 0; k < n; ++k)
+              {
+                const auto col = TrilinosWrappers::global_column_index(E, indices[k]);
+                AssertThrow(mark[col] == types::global_dof_index(row),
+                            ExcMessage("HermiteMultigrid: an entry of the "
+                                       "matrix is not in the pattern given "
+                                       "to setup()"));
+                F.offset.push_back(place[col]);
+              }
+          }
+      }
+    AssertThrow(F.offset.size() == std::size_t(E.NumMyNonzeros()),
+                ExcMessage("HermiteMultigrid: the matrix pattern changed "
+                           "without a new setup()"));
+    std::size_t e = 0;
+    for (int r = 0; r < n_rows; ++r)
+      {
+        E.ExtractMyRowView(r, n, values, indices);
+        // deal.II stores the diagonal first and a row contiguously
+        float *row =
+          &F.matrix.diag_element(TrilinosWrappers::global_row_index(E, r));
+        for (int k = 0; k < n; ++k, ++e)
+          row[F.offset[e]] = static_cast<float>(values[k]);
+      }
+  }
 
 
 
@@ -678,6 +746,12 @@ namespace NitscheContact
     level_double.clear();
     status_of_levels.clear();
     fine_vertex_dofs = vertex_dofs;
+    has_top           = false;
+    top_offsets_ready = false;
+    top_matrix        = nullptr;
+    top.matrix.clear();
+    top_prolong.matrix.clear();
+    top_restrict.matrix.clear();
 
     // The level sizes, coarsest first.
     L   = 0;
@@ -849,8 +923,8 @@ namespace NitscheContact
     for (unsigned int l = 0; l < level_double.size(); ++l)
       level_double[l].reinit(levels[l].pattern);
 
-    transfer       = std::make_unique<Transfer>(prolong_f, restrict_f);
-    level_matrices = std::make_unique<LevelMatrices>(levels, fine, L);
+    transfer       = std::make_unique<Transfer>(*this);
+    level_matrices = std::make_unique<LevelMatrices>(*this);
     smoother       = std::make_unique<Smoother>();
     coarse         = std::make_unique<CoarseSolver>();
   }
@@ -982,11 +1056,65 @@ namespace NitscheContact
     // part by orders of magnitude before the point leaves contact).
     for (unsigned int l = 0; l < L; ++l)
       levels[l].matrix.copy_from(level_double[l]);
-    smoother->reinit(levels, fine, L);
+    if (L == 0)
+      levels[0].matrix.copy_from(level_double[0]);
+    smoother->reinit(*this);
     coarse->reinit(level_double[0]);
     if (!multigrid)
-      multigrid = std::make_unique<Multigrid<LevelVector>>(
-        *level_matrices, *coarse, *transfer, *smoother, *smoother, 0, L);
+      multigrid = std::make_unique<Multigrid<LevelVector>>(*level_matrices,
+                                                           *coarse,
+                                                           *transfer,
+                                                           *smoother,
+                                                           *smoother,
+                                                           0,
+                                                           max_level());
+  }
+
+
+
+  void
+  HermiteMultigrid::setup_top(
+    const std::vector<std::tuple<types::global_dof_index,
+                                 types::global_dof_index,
+                                 double>> &prolongation,
+    const DynamicSparsityPattern          &pattern)
+  {
+    Assert(transfer && !multigrid,
+           ExcMessage("HermiteMultigrid::setup_top() after setup()"));
+    const types::global_dof_index n_top = pattern.n_rows(),
+                                  n_bfs = level_sets[L].size();
+    top.pattern.copy_from(pattern);
+    top.matrix.reinit(top.pattern);
+    DynamicSparsityPattern p(n_top, n_bfs), pt(n_bfs, n_top);
+    for (const auto &[i, j, a] : prolongation)
+      {
+        AssertThrow(i < n_top && j < n_bfs, ExcInternalError());
+        p.add(i, j);
+        pt.add(j, i);
+      }
+    top_prolong.pattern.copy_from(p);
+    top_prolong.matrix.reinit(top_prolong.pattern);
+    top_restrict.pattern.copy_from(pt);
+    top_restrict.matrix.reinit(top_restrict.pattern);
+    for (const auto &[i, j, a] : prolongation)
+      {
+        top_prolong.matrix.add(i, j, float(a));
+        top_restrict.matrix.add(j, i, float(a));
+      }
+    level_sets.push_back(complete_index_set(n_top));
+    has_top           = true;
+    top_offsets_ready = false;
+  }
+
+
+
+  void
+  HermiteMultigrid::set_top_matrix(const MatrixType &A)
+  {
+    AssertThrow(has_top, ExcMessage("HermiteMultigrid: no top level"));
+    copy_matrix(A, top, !top_offsets_ready);
+    top_offsets_ready = true;
+    top_matrix        = &A;
   }
 
 
@@ -1213,9 +1341,65 @@ namespace NitscheContact
   {
     Assert(multigrid, ExcMessage("HermiteMultigrid::set_status() first"));
     double defect = 0.;
-    // the finest operator against the assembled matrix
-    if (L > 0)
+    // the operator of level l (single precision)
+    const auto apply = [&](const unsigned int l, LevelVector &y,
+                           const LevelVector &x) {
+      if (l > L)
+        top.matrix.vmult(y, x);
+      else if (l == L && L > 0)
+        fine.vmult(y, x);
+      else if (l == L)
+        {
+          // L = 0: the coarse solver's matrix
+          Vector<double> xd(x.size()), yd(x.size());
+          std::copy(x.begin(), x.end(), xd.begin());
+          level_double[0].vmult(yd, xd);
+          std::copy(yd.begin(), yd.end(), y.begin());
+        }
+      else
+        levels[l].matrix.vmult(y, x);
+    };
+    if (has_top)
       {
+        // the top matrix copy against A, and the finest BFS operator
+        // against P_top^T A_top P_top
+        AssertThrow(&A == top_matrix,
+                    ExcMessage("HermiteMultigrid::galerkin_defect: A is not "
+                               "the matrix of the top level"));
+        const IndexSet owned = complete_index_set(A.m());
+        VectorType     x(owned, A.get_mpi_communicator()),
+          y(owned, A.get_mpi_communicator());
+        pseudo_random(x, 4321);
+        A.vmult(y, x);
+        LevelVector xf(A.m()), yf(A.m());
+        std::copy(x.begin(), x.end(), xf.begin());
+        top.matrix.vmult(yf, xf);
+        double diff = 0., norm = 0.;
+        for (types::global_dof_index i = 0; i < A.m(); ++i)
+          {
+            diff += (yf[i] - y[i]) * (yf[i] - y[i]);
+            norm += y[i] * y[i];
+          }
+        defect = std::sqrt(diff / norm);
+
+        // (P_top has no columns for the constrained BFS dofs, which are
+        // decoupled on both sides: compare on the others)
+        const types::global_dof_index n = level_sets[L].size();
+        LevelVector xc(n), yc(n), zc(n), p(A.m()), q(A.m());
+        pseudo_random(xc, 2468);
+        for (types::global_dof_index i = 0; i < n; ++i)
+          if (level_constrained[L][i])
+            xc[i] = 0.f;
+        apply(L, yc, xc);
+        top_prolong.matrix.vmult(p, xc);
+        top.matrix.vmult(q, p);
+        top_restrict.matrix.vmult(zc, q);
+        zc -= yc;
+        defect = std::max(defect, double(zc.l2_norm() / yc.l2_norm()));
+      }
+    else if (L > 0)
+      {
+        // the finest operator against the assembled matrix
         const IndexSet owned = complete_index_set(A.m());
         VectorType     x(owned, A.get_mpi_communicator()),
           y(owned, A.get_mpi_communicator());
@@ -1239,12 +1423,9 @@ namespace NitscheContact
         const unsigned int n = level_sets[l].size(), nf = level_sets[l + 1].size();
         LevelVector        x(n), y(n), z(n), p(nf), q(nf);
         pseudo_random(x, 12345 + l);
-        levels[l].matrix.vmult(y, x);
+        apply(l, y, x);
         prolong_f[l].matrix.vmult(p, x);
-        if (l + 1 == L)
-          fine.vmult(q, p);
-        else
-          levels[l + 1].matrix.vmult(q, p);
+        apply(l + 1, q, p);
         restrict_f[l].matrix.vmult(z, q);
         z -= y;
         defect = std::max(defect, double(z.l2_norm() / y.l2_norm()));
@@ -1257,15 +1438,17 @@ namespace NitscheContact
   void
   HermiteMultigrid::vmult(Vector<double> &dst, const Vector<double> &src) const
   {
-    if (multigrid->defect.max_level() != L)
-      multigrid->defect.resize(0, L);
-    for (unsigned int l = 0; l < L; ++l)
+    const unsigned int top_level = max_level();
+    if (multigrid->defect.max_level() != top_level)
+      multigrid->defect.resize(0, top_level);
+    for (unsigned int l = 0; l < top_level; ++l)
       multigrid->defect[l].reinit(level_sets[l].size());
-    LevelVector &d = multigrid->defect[L];
-    d.reinit(level_sets[L].size(), true);
+    LevelVector &d = multigrid->defect[top_level];
+    d.reinit(level_sets[top_level].size(), true);
+    AssertDimension(src.size(), d.size());
     std::copy(src.begin(), src.end(), d.begin());
     multigrid->vcycle();
-    const LevelVector &u = multigrid->solution[L];
+    const LevelVector &u = multigrid->solution[top_level];
     std::copy(u.begin(), u.end(), dst.begin());
   }
 } // namespace NitscheContact

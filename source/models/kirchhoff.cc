@@ -993,8 +993,11 @@ namespace NitscheContact
               }
             else
               {
+                // right preconditioning: the stopping test sees the true
+                // residual
                 SolverGMRES<Vector<double>> gmres(
-                  control, SolverGMRES<Vector<double>>::AdditionalData(100));
+                  control,
+                  SolverGMRES<Vector<double>>::AdditionalData(100, true));
                 gmres.solve(A, x, b, *multigrid);
               }
           }

@@ -51,6 +51,7 @@
 #include <nitsche_contact/fe/fe_bicubic_hermite.h>
 
 #include <array>
+#include <tuple>
 #include <memory>
 #include <string>
 #include <unordered_map>
@@ -218,18 +219,40 @@ namespace NitscheContact
     void
     set_status(const std::vector<unsigned char> &status);
 
+    /// An extra finest level above the BFS levels, for another
+    /// discretisation on the mesh refined once more (the Mindlin model's
+    /// MITC4 plate, whose multigrid uses the BFS plate as its coarse
+    /// space): `prolongation` gives the entries (top dof, structured BFS dof
+    /// of the finest BFS level, value) of P_top, `pattern` the sparsity of
+    /// its matrices. Call after setup() and before set_matrices(); the
+    /// cell matrices given to set_matrices() must make the finest BFS
+    /// operator P_top^T A_top P_top (galerkin_defect() checks it).
+    void
+    setup_top(const std::vector<std::tuple<dealii::types::global_dof_index,
+                                           dealii::types::global_dof_index,
+                                           double>> &prolongation,
+              const dealii::DynamicSparsityPattern    &pattern);
+
+    /// The current matrix of the extra finest level (copied to single
+    /// precision; kept by reference for galerkin_defect()). Call before
+    /// set_status().
+    void
+    set_top_matrix(const MatrixType &A);
+
     /// Largest relative deviation |A_l x - P_l^T A_{l+1} P_l x| / |A_l x|
     /// over the coarse levels l for a fixed pseudo-random x, computed with
     /// the global single-precision transfer matrices of the V-cycle (built
     /// independently of the cell-by-cell restriction), and of the finest
-    /// operator from A (the assembled Newton matrix of the current status):
-    /// about 1e-7 when all is consistent.
+    /// operator from A (the assembled Newton matrix of the current status;
+    /// with a top level, A is its matrix and the finest BFS operator is
+    /// checked against P_top^T A P_top): about 1e-7 when all is consistent.
     double
     galerkin_defect(const MatrixType &A) const;
 
     /// One V-cycle applied to src (the preconditioner interface of the
     /// deal.II Krylov solvers), in the structured numbering of
-    /// HermiteCellOperator.
+    /// HermiteCellOperator, or in the numbering of the top level if there
+    /// is one.
     void
     vmult(dealii::Vector<double> &dst, const dealii::Vector<double> &src) const;
 
@@ -264,7 +287,21 @@ namespace NitscheContact
     {
       dealii::SparsityPattern     pattern;
       dealii::SparseMatrix<float> matrix;
+      /// (top level) the place of the e-th stored entry of the Trilinos
+      /// matrix (row by row) in the deal.II row, counted from the diagonal
+      std::vector<unsigned int> offset;
     };
+
+    /// Copy the values of A into F, whose pattern contains that of A; with
+    /// new_offsets first compute F.offset.
+    static void
+    copy_matrix(const MatrixType &A, FloatMatrix &F, bool new_offsets);
+    /// the finest level of the V-cycle: L, or L + 1 with a top level
+    unsigned int
+    max_level() const
+    {
+      return L + (has_top ? 1 : 0);
+    }
 
     /// Zero the rows and columns of the constrained dofs of a level-l cell
     /// in a 16 x 16 cell matrix.
@@ -332,6 +369,11 @@ namespace NitscheContact
     std::vector<dealii::SparseMatrix<double>> level_double;
     /// single-precision prolongation (l -> l+1) and its transpose
     std::vector<FloatMatrix> prolong_f, restrict_f;
+    /// the extra finest level: its matrix, P_top and P_top^T
+    bool              has_top = false;
+    FloatMatrix       top, top_prolong, top_restrict;
+    bool              top_offsets_ready = false;
+    const MatrixType *top_matrix        = nullptr;
 
     std::unique_ptr<Transfer>                  transfer;
     std::unique_ptr<LevelMatrices>             level_matrices;

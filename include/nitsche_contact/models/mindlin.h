@@ -26,8 +26,10 @@
 
 #include <nitsche_contact/model.h>
 #include <nitsche_contact/parameters.h>
+#include <nitsche_contact/models/hermite_multigrid.h>
 #include <nitsche_contact/reused_factorization.h>
 
+#include <array>
 #include <memory>
 
 namespace NitscheContact
@@ -144,6 +146,10 @@ namespace NitscheContact
       std::string  contact_rule                = "gauss";
       std::string  linear_solver               = "Amesos_Mumps";
       std::string  membrane_setting            = "auto";
+      /// 'Linear solver = multigrid'
+      bool         multigrid        = false;
+      double       krylov_tolerance = 1e-9;
+      bool         check_multigrid  = false;
     };
 
     /// The assumed (MITC4) or plain transverse shear strain gamma = grad w +
@@ -169,6 +175,19 @@ namespace NitscheContact
     assemble_constant_part();
     double
     energy_norm(const dealii::Vector<double> &v) const;
+    /// 'Linear solver = multigrid', per mesh: the BFS levels on the mesh
+    /// coarsened once and the MITC4 level on top (after setup_dofs()).
+    void
+    setup_multigrid();
+    /// 'Linear solver = multigrid', per cycle: the cell matrices of the
+    /// finest BFS level, P_pos^T M P_pos of the MITC4 cell matrices M
+    /// (after precompute_cell_data()).
+    void
+    setup_multigrid_matrices();
+    /// Solve with the multigrid-preconditioned Krylov method; returns the
+    /// Krylov iterations.
+    unsigned int
+    solve_multigrid(dealii::Vector<double> &x);
     /// The cell containing p (Cartesian index lookup), or end().
     dealii::DoFHandler<2>::active_cell_iterator
     locate(const dealii::Point<2> &p, dealii::Point<2> &unit_point) const;
@@ -217,6 +236,13 @@ namespace NitscheContact
     dealii::TrilinosWrappers::SparseMatrix constant_matrix;
     dealii::TrilinosWrappers::SparseMatrix system_matrix;
     ReusedFactorization                    direct_solver;
+    /// 'Linear solver = multigrid': the Kirchhoff (BFS) multigrid with the
+    /// MITC4 plate as its extra finest level
+    std::unique_ptr<HermiteMultigrid>      multigrid;
+    std::unique_ptr<FE_BicubicHermite<2>>  bfs;
+    /// the 12 x 16 prolongations from a BFS cell to its child in position
+    /// pos = px + 2 py (row: MITC4 local dof; column: BFS local dof 4 v + k)
+    std::array<dealii::FullMatrix<double>, 4> child_prolongation;
     unsigned long last_changed = 0; ///< status changes of the last matrix
     dealii::Vector<double>                 load;      // condensed F
     dealii::Vector<double>                 residual;  // -R(U), condensed
