@@ -3,15 +3,30 @@
 # paper_mindlin.prm): DoFs, nonlinear iterations and wall-clock seconds per
 # phase for each refinement cycle, in Release. Usage:
 #   benchmarks/mindlin.sh [path/to/nitsche-contact] [number of cycles] [gauss|lobatto]
+#                         [direct|multigrid] [subdivisions]
 # The third argument selects the contact points: 'gauss' (default, 4x4 Gauss
 # as in paper_mindlin.prm) or 'lobatto' (2x2 Gauss-Lobatto = cell vertices;
-# fewer Newton iterations, doc/mindlin.md 4.1).
+# fewer Newton iterations, doc/mindlin.md 4.1). The fourth the linear
+# solver: 'direct' (default, MUMPS) or 'multigrid' (CG with the V-cycle over
+# Kirchhoff coarse levels, doc/mindlin.md 4.2). The fifth the subdivisions
+# of the first mesh per direction (default 8, as the .prm; 10 with 7 cycles
+# gives 640^2 cells = 1,232,643 dofs).
 # The program must be built with CMAKE_BUILD_TYPE=Release.
 set -e
 here=$(cd "$(dirname "$0")/.." && pwd)
 exe=${1:-$here/build/nitsche-contact}
 cycles=${2:-7}
 rule=${3:-gauss}
+solver=${4:-direct}
+subdivisions=${5:-8}
+case "$solver" in
+  direct) solver_line="" ;;
+  multigrid) solver_line="\n  set Linear solver = multigrid" ;;
+  *) echo "benchmarks/mindlin.sh: solver must be 'direct' or 'multigrid', not '$solver'" >&2; exit 1 ;;
+esac
+case "$subdivisions" in
+  ''|*[!0-9]*) echo "benchmarks/mindlin.sh: subdivisions must be a positive integer, not '$subdivisions'" >&2; exit 1 ;;
+esac
 case "$rule" in
   gauss) points=4 ;;
   lobatto) points=2 ;;
@@ -23,25 +38,35 @@ sed -e "s/^\( *set Number of cycles *=\).*/\1 $cycles/" \
     -e "s|^\( *set Directory *=\).*|\1 $work/out|" \
     -e "s/^\( *set Format *=\).*/\1 none/" \
     -e "s/^\( *set Print iterations *=\).*/\1 false/" \
-    -e "s/^\( *set Membrane unknowns *=.*\)/\1\n  set Contact quadrature points = $points\n  set Contact quadrature rule = $rule/" \
+    -e "s/^\( *set Subdivisions *=\).*/\1 $subdivisions, $subdivisions/" \
+    -e "s/^\( *set Membrane unknowns *=.*\)/\1\n  set Contact quadrature points = $points\n  set Contact quadrature rule = $rule$solver_line/" \
     "$here/parameters/paper_mindlin.prm" > "$work/bench.prm"
 start=$(date +%s.%N)
-"$exe" "$work/bench.prm" > "$work/log" || { cat "$work/log"; exit 1; }
+if [ -x /usr/bin/time ]; then
+  /usr/bin/time -v "$exe" "$work/bench.prm" > "$work/log" 2> "$work/time" ||
+    { cat "$work/log" "$work/time"; exit 1; }
+else
+  "$exe" "$work/bench.prm" > "$work/log" || { cat "$work/log"; exit 1; }
+fi
 end=$(date +%s.%N)
 python3 - "$work/out/summary.json" "$start" "$end" <<'PY'
 import json, sys
 s = json.load(open(sys.argv[1]))
 print("Mindlin model, paper test (clamped [0,10]^2, t = 0.01, q = -0.02, obstacle -1)")
-print("%5s %9s %5s %8s %8s %8s %8s %8s %9s" % ("cycle", "dofs", "its", "setup",
-      "assembly", "solve", "postproc", "total", "force"))
+print("linear solver: %s" % s["parameters"].get("linear solver", "?"))
+print("%5s %9s %5s %7s %8s %8s %8s %8s %8s %9s" % ("cycle", "dofs", "its", "krylov",
+      "setup", "assembly", "solve", "postproc", "total", "force"))
 acc = 0.0
 for c in s["cycles"]:
     t = c["wall_times"]
     tot = t["setup"] + t["assembly"] + t["solve"] + t["postprocess"] + t["output"]
     acc += tot
-    print("%5d %9d %5d %8.2f %8.2f %8.2f %8.2f %8.2f %9.6f" % (c["cycle"], c["n_dofs"],
-          c["nonlinear_iterations"], t["setup"], t["assembly"], t["solve"],
+    print("%5d %9d %5d %7d %8.2f %8.2f %8.2f %8.2f %8.2f %9.6f" % (c["cycle"], c["n_dofs"],
+          c["nonlinear_iterations"], c.get("linear_iterations", 0), t["setup"],
+          t["assembly"], t["solve"],
           t["postprocess"], tot, c["contact_force"]))
 print("sum of phases %.1f s, wall clock of the run %.1f s"
       % (acc, float(sys.argv[3]) - float(sys.argv[2])))
 PY
+[ -f "$work/time" ] && grep -E "Maximum resident" "$work/time"
+exit 0

@@ -114,9 +114,15 @@ namespace NitscheContact
       if (constrained[s])
         {
           const unsigned int v = s / 4, i = v % (nx + 1), j = v / (nx + 1);
+          const double d =
+            constrained_diagonal[kind1(i, nx) + 3 * kind1(j, ny)][s % 4];
+          // (AffineConstraints would use the cell's mean diagonal for a
+          // zero entry; the plate cell matrices have none)
+          AssertThrow(d > 0.,
+                      ExcMessage("HermiteCellOperator: zero diagonal entry "
+                                 "of the cell matrix on a constrained dof"));
           constrained_dofs.push_back(s);
-          constrained_values.push_back(
-            constrained_diagonal[kind1(i, nx) + 3 * kind1(j, ny)][s % 4]);
+          constrained_values.push_back(d);
         }
 
     cell_slot.assign(std::size_t(nx) * ny, -1);
@@ -402,13 +408,13 @@ namespace NitscheContact
 
 
   double
-  HermiteCellOperator::el(const size_type i, const size_type j) const
+  HermiteCellOperator::el(const size_type, const size_type) const
   {
-    AssertThrow(i == j,
-                ExcMessage("HermiteCellOperator gives diagonal entries only"));
-    Vector<double> d;
-    diagonal(d);
-    return d[i];
+    // (PreconditionChebyshev asks only when it has no sized Jacobi
+    // preconditioner; the smoothers always give one)
+    AssertThrow(false,
+                ExcMessage("HermiteCellOperator::el(): use diagonal()"));
+    return 0.;
   }
 
 
@@ -745,6 +751,7 @@ namespace NitscheContact
     transfer.reset();
     level_double.clear();
     status_of_levels.clear();
+    nq               = 0; // set_matrices() comes next
     fine_vertex_dofs = vertex_dofs;
     has_top           = false;
     top_offsets_ready = false;
@@ -769,9 +776,9 @@ namespace NitscheContact
         complete_index_set(4 * ((nx0 << l) + 1) * ((ny0 << l) + 1));
 
     // Dof index of dof k at vertex (i, j) of level l: structured numbering
-    // on every level (the V-cycle permutes from and to the DoFHandler
-    // numbering of the finest level). The constraint pattern of a vertex
-    // is the one of the same vertex on the finest level.
+    // on every level (the caller permutes from and to its DoFHandler
+    // numbering). The constraint pattern of a vertex is the one of the same
+    // vertex on the finest level.
     const auto index = [&](unsigned int l, unsigned int i, unsigned int j,
                            unsigned int k) -> types::global_dof_index {
       const unsigned int n = (nx0 << l) + 1;
@@ -1149,6 +1156,8 @@ namespace NitscheContact
                            std::to_string(status.size()) +
                            " point states for " + std::to_string(n_cells) +
                            " cells of " + std::to_string(nq) + " points"));
+    if (status == status_of_levels)
+      return; // the levels are those of this status already
     if (status_of_levels.empty())
       {
         for (std::size_t c = 0; c < n_cells; ++c)
@@ -1397,9 +1406,10 @@ namespace NitscheContact
         zc -= yc;
         defect = std::max(defect, double(zc.l2_norm() / yc.l2_norm()));
       }
-    else if (L > 0)
+    else
       {
-        // the finest operator against the assembled matrix
+        // the finest operator (which the outer Krylov method applies)
+        // against the assembled matrix
         const IndexSet owned = complete_index_set(A.m());
         VectorType     x(owned, A.get_mpi_communicator()),
           y(owned, A.get_mpi_communicator());
@@ -1417,6 +1427,15 @@ namespace NitscheContact
             norm += a * a;
           }
         defect = std::sqrt(diff / norm);
+        if (L == 0)
+          {
+            // the single level, factorised by the coarse solver, against
+            // the finest operator
+            Vector<double> y0(fine.m());
+            level_double[0].vmult(y0, xs);
+            y0 -= ys;
+            defect = std::max(defect, y0.l2_norm() / ys.l2_norm());
+          }
       }
     for (unsigned int l = 0; l < L; ++l)
       {

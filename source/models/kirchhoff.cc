@@ -926,22 +926,26 @@ namespace NitscheContact
           }
         system_matrix.compress(VectorOperation::add);
       }
-    if (use_multigrid)
+  }
+
+
+
+  void
+  KirchhoffModel::update_multigrid() const
+  {
+    // The multigrid applies the Newton matrix from its cell matrices, and
+    // its coarse levels follow it exactly: Galerkin products, cell by cell,
+    // on the first matrix of a mesh; then updates by the contact matrices
+    // of the cells whose contact status changed (none: nothing to do).
+    multigrid->set_status(previous_status);
+    if (check_multigrid)
       {
-        // The multigrid applies the Newton matrix from its cell matrices,
-        // and its coarse levels follow it exactly: Galerkin products, cell
-        // by cell, on the first matrix of a mesh; then updates by the
-        // contact matrices of the cells whose contact status changed.
-        multigrid->set_status(status);
-        if (check_multigrid)
-          {
-            const double defect = multigrid->galerkin_defect(system_matrix);
-            AssertThrow(defect < 1e-4,
-                        ExcMessage("internal error: the multigrid operators "
-                                   "are not the Newton matrix and its "
-                                   "Galerkin products (relative defect " +
-                                   number_to_string(defect) + ")"));
-          }
+        const double defect = multigrid->galerkin_defect(system_matrix);
+        AssertThrow(defect < 1e-4,
+                    ExcMessage("internal error: the multigrid operators are "
+                               "not the Newton matrix and its Galerkin "
+                               "products (relative defect " +
+                               number_to_string(defect) + ")"));
       }
   }
 
@@ -953,6 +957,7 @@ namespace NitscheContact
     unsigned int linear_iterations = 0;
     if (use_multigrid)
       {
+        update_multigrid();
         // Inexact Newton: while contact points still change status the
         // step is only a direction towards the next status, and a loose
         // solve is enough. On a settled status the correction only has to
@@ -1045,7 +1050,8 @@ namespace NitscheContact
         system_matrix.vmult(y, x);
         return;
       }
-    // the multigrid's operator of the status of the last solve
+    // the multigrid's operator of the last assembled status
+    update_multigrid();
     Vector<double> xs(structured_dofs.size()), ys(structured_dofs.size());
     for (std::size_t k = 0; k < structured_dofs.size(); ++k)
       xs[k] = x[structured_dofs[k]];

@@ -19,11 +19,15 @@
 // V-cycle.
 //
 // The restricted cell matrices are computed and summed in double precision;
-// the V-cycle runs in single precision on deal.II SparseMatrix<float> copies
-// of the level matrices, whose products are multithreaded. It is only a preconditioner
+// the V-cycle runs in single precision: on the finest level with
+// HermiteCellOperator (the matrix applied from its cell matrices, not
+// stored), below it on deal.II SparseMatrix<float> copies of the level
+// matrices, whose products are multithreaded. It is only a preconditioner
 // of the double-precision Krylov method on the exact Jacobian, and the
 // smoother is bound by memory bandwidth, which single precision halves
-// (measured in doc/kirchhoff.md).
+// (measured in doc/kirchhoff.md). An optional extra finest level (setup_top)
+// takes another discretisation on the mesh refined once more, e.g. the
+// Mindlin plate, for which the BFS levels are the coarse space.
 //
 // Homogeneous Dirichlet-type constraints (clamped, simply supported and
 // symmetry edges) are handled by giving each constrained coarse dof the
@@ -96,7 +100,8 @@ namespace NitscheContact
     set_cell(unsigned int c, const unsigned char *status);
 
     /// K_c of cell c (16 x 16, row-major, double; rows and columns of
-    /// constrained dofs not removed), nullptr if no point is active.
+    /// constrained dofs not removed), nullptr if no point is active. Valid
+    /// until the next set_cell().
     const double *
     contact_matrix(unsigned int c) const
     {
@@ -107,7 +112,8 @@ namespace NitscheContact
     void
     finish();
 
-    /// dst = A src (float or double)
+    /// dst = A src (float or double; not re-entrant: one product at a time
+    /// per precision, it uses a buffer of the object)
     template <typename Number>
     void
     vmult(dealii::Vector<Number> &dst, const dealii::Vector<Number> &src) const;
@@ -127,7 +133,8 @@ namespace NitscheContact
     {
       return m();
     }
-    /// diagonal entries only (what PreconditionChebyshev may ask for)
+    /// not available (PreconditionChebyshev needs it to compile; it is
+    /// given the diagonal instead)
     double
     el(size_type i, size_type j) const;
 
@@ -215,7 +222,7 @@ namespace NitscheContact
     /// != 0 if point q of cell c is active. The first call after
     /// set_matrices() builds the Galerkin level matrices cell by cell;
     /// later calls update them by the restricted contact matrices of the
-    /// cells whose status changed.
+    /// cells whose status changed (and return at once if none did).
     void
     set_status(const std::vector<unsigned char> &status);
 
@@ -245,7 +252,8 @@ namespace NitscheContact
     /// independently of the cell-by-cell restriction), and of the finest
     /// operator from A (the assembled Newton matrix of the current status;
     /// with a top level, A is its matrix and the finest BFS operator is
-    /// checked against P_top^T A P_top): about 1e-7 when all is consistent.
+    /// checked against P_top^T A P_top; with a single level, that level
+    /// against the finest operator too): about 1e-7 when all is consistent.
     double
     galerkin_defect(const MatrixType &A) const;
 

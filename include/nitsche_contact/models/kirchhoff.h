@@ -110,6 +110,10 @@ namespace NitscheContact
     void
     jacobian_vmult(dealii::Vector<double> &y,
                    const dealii::Vector<double> &x) const;
+    /// 'Linear solver = multigrid': bring the multigrid to the contact
+    /// status of the last assembled matrix (and check it if asked).
+    void
+    update_multigrid() const;
     const dealii::AffineConstraints<double> &
     get_constraints() const
     {

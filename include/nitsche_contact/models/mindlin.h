@@ -238,8 +238,8 @@ namespace NitscheContact
     ReusedFactorization                    direct_solver;
     /// 'Linear solver = multigrid': the Kirchhoff (BFS) multigrid with the
     /// MITC4 plate as its extra finest level
+    std::unique_ptr<FE_BicubicHermite<2>>  bfs; // (used by multigrid)
     std::unique_ptr<HermiteMultigrid>      multigrid;
-    std::unique_ptr<FE_BicubicHermite<2>>  bfs;
     /// the 12 x 16 prolongations from a BFS cell to its child in position
     /// pos = px + 2 py (row: MITC4 local dof; column: BFS local dof 4 v + k)
     std::array<dealii::FullMatrix<double>, 4> child_prolongation;
