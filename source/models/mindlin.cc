@@ -211,6 +211,16 @@ namespace NitscheContact
                 "the Mindlin plate model has no cells through the "
                 "thickness; give 'nx, ny' (or nz = 1)");
 
+    if (settings.multigrid && common.initial_refinement == 0 &&
+        (common.subdivisions[0] % 2 != 0 || common.subdivisions[1] % 2 != 0))
+      bad_value("Mindlin/Linear solver",
+                "multigrid",
+                "needs an even number of cells per direction (its coarse "
+                "levels live on the mesh coarsened once); 'Geometry/"
+                "Subdivisions' is " +
+                  std::to_string(common.subdivisions[0]) + ", " +
+                  std::to_string(common.subdivisions[1]) +
+                  " with 'Initial refinement = 0'");
     load_function = make_parsed_function<2>(common.load_expression,
                                             common.load_constants,
                                             1,

@@ -74,6 +74,18 @@ CASES = [
      "set Model = kirchhoff\nsubsection Kirchhoff\n  set Linear solver = multigrid\n"
      "  set Contact formulation = nitsche\nend",
      ["Kirchhoff/Linear solver", "multigrid", "gsv", "direct"]),
+    ("Mindlin Krylov tolerance = 0",
+     "set Model = mindlin\nsubsection Mindlin\n  set Linear solver = multigrid\n"
+     "  set Krylov tolerance = 0\nend",
+     ["Mindlin/Krylov tolerance", "'0'", "(0, 1)"]),
+    ("Mindlin multigrid with friction",
+     "set Model = mindlin\nsubsection Contact\n  set Friction coefficient = 0.2\nend\n"
+     "subsection Mindlin\n  set Linear solver = multigrid\nend",
+     ["Mindlin/Linear solver", "multigrid", "Friction coefficient"]),
+    ("Mindlin multigrid on an odd number of cells",
+     "set Model = mindlin\nsubsection Geometry\n  set Subdivisions = 5, 4\nend\n"
+     "subsection Mindlin\n  set Linear solver = multigrid\nend",
+     ["Mindlin/Linear solver", "multigrid", "even", "5, 4"]),
     ("Kirchhoff unknown linear solver",
      "set Model = kirchhoff\nsubsection Kirchhoff\n  set Linear solver = amg\nend",
      ["Linear solver", "amg", "multigrid"]),
