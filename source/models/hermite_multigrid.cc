@@ -487,7 +487,7 @@ namespace NitscheContact
           const LevelVector &src) const override
     {
       if (level > mg.L)
-        mg.top.matrix.vmult(dst, src);
+        mg.top.vmult(dst, src);
       else if (level == mg.L && mg.L > 0)
         mg.fine.vmult(dst, src);
       else
@@ -549,45 +549,46 @@ namespace NitscheContact
       const unsigned int L = mg.L;
       sparse.clear();
       sparse.resize(mg.max_level() + 1);
-      const auto sparse_smoother = [&](const unsigned int         l,
-                                       const SparseMatrix<float> &A) {
-        auto         data = settings<SparseMatrix<float>>();
-        LevelVector &d    = data.preconditioner->get_vector();
-        d.reinit(A.m());
-        for (unsigned int i = 0; i < A.m(); ++i)
-          d[i] = A.diag_element(i);
-        invert(d);
-        sparse[l] = std::make_unique<Chebyshev<SparseMatrix<float>>>();
-        sparse[l]->initialize(A, data);
-      };
+      cell.clear();
+      cell.resize(mg.max_level() + 1);
       for (unsigned int l = 1; l < L; ++l)
-        sparse_smoother(l, mg.levels[l].matrix);
-      if (mg.has_top)
-        sparse_smoother(L + 1, mg.top.matrix);
-      cell_level = L;
-      cell.reset();
-      if (L > 0)
         {
-          auto data = settings<HermiteCellOperator>();
-          mg.fine.diagonal(data.preconditioner->get_vector());
-          invert(data.preconditioner->get_vector());
-          cell = std::make_unique<Chebyshev<HermiteCellOperator>>();
-          cell->initialize(mg.fine, data);
+          const SparseMatrix<float> &A    = mg.levels[l].matrix;
+          auto                       data = settings<SparseMatrix<float>>();
+          LevelVector &d = data.preconditioner->get_vector();
+          d.reinit(A.m());
+          for (unsigned int i = 0; i < A.m(); ++i)
+            d[i] = A.diag_element(i);
+          invert(d);
+          sparse[l] = std::make_unique<Chebyshev<SparseMatrix<float>>>();
+          sparse[l]->initialize(A, data);
         }
+      const auto cell_smoother = [&](const unsigned int         l,
+                                     const HermiteCellOperator &A) {
+        auto data = settings<HermiteCellOperator>();
+        A.diagonal(data.preconditioner->get_vector());
+        invert(data.preconditioner->get_vector());
+        cell[l] = std::make_unique<Chebyshev<HermiteCellOperator>>();
+        cell[l]->initialize(A, data);
+      };
+      if (L > 0)
+        cell_smoother(L, mg.fine);
+      if (mg.has_top)
+        cell_smoother(L + 1, mg.top);
     }
     void
     clear() override
     {
       sparse.clear();
-      cell.reset();
+      cell.clear();
     }
     void
     smooth(const unsigned int level,
            LevelVector       &u,
            const LevelVector &rhs) const override
     {
-      if (level == cell_level)
-        cell->step(u, rhs);
+      if (cell[level])
+        cell[level]->step(u, rhs);
       else
         sparse[level]->step(u, rhs);
     }
@@ -596,8 +597,8 @@ namespace NitscheContact
           LevelVector       &u,
           const LevelVector &rhs) const override
     {
-      if (level == cell_level)
-        cell->vmult(u, rhs);
+      if (cell[level])
+        cell[level]->vmult(u, rhs);
       else
         sparse[level]->vmult(u, rhs);
     }
@@ -623,11 +624,10 @@ namespace NitscheContact
         a = (a != 0.f) ? 1.f / a : 1.f;
     }
 
-    /// levels 1 .. L-1 and the top level
+    /// by level: levels 1 .. L-1 (sparse), L if L > 0 and the top level
+    /// (cell operators)
     std::vector<std::unique_ptr<Chebyshev<SparseMatrix<float>>>> sparse;
-    /// level L (the finest BFS level, if L > 0)
-    std::unique_ptr<Chebyshev<HermiteCellOperator>> cell;
-    unsigned int                                    cell_level = 0;
+    std::vector<std::unique_ptr<Chebyshev<HermiteCellOperator>>> cell;
   };
 
 
@@ -657,68 +657,6 @@ namespace NitscheContact
     SparseDirectUMFPACK    solver;
     mutable Vector<double> x, b;
   };
-
-
-
-  void
-  HermiteMultigrid::copy_matrix(const MatrixType &A,
-                                FloatMatrix      &F,
-                                const bool        new_offsets)
-  {
-    const Epetra_CrsMatrix &E      = A.trilinos_matrix();
-    const int               n_rows = E.NumMyRows();
-    AssertThrow(types::global_dof_index(n_rows) == A.m() && A.m() == A.n(),
-                ExcMessage("HermiteMultigrid runs on one process"));
-    int     n;
-    double *values;
-    int    *indices;
-    if (new_offsets)
-      {
-        // place of every column of a row within the row of F, by a scatter
-        // into an array indexed by column
-        std::vector<unsigned int>            place(A.n());
-        std::vector<types::global_dof_index> mark(A.n(),
-                                                  numbers::invalid_dof_index);
-        F.offset.clear();
-        F.offset.reserve(E.NumMyNonzeros());
-        for (int r = 0; r < n_rows; ++r)
-          {
-            const auto row = TrilinosWrappers::global_row_index(E, r);
-            const auto diag = F.pattern(row, row);
-            AssertThrow(diag != SparsityPattern::invalid_entry,
-                        ExcInternalError());
-            for (auto it = F.pattern.begin(row); it != F.pattern.end(row);
-                 ++it)
-              {
-                place[it->column()] = it->global_index() - diag;
-                mark[it->column()]  = row;
-              }
-            E.ExtractMyRowView(r, n, values, indices);
-            for (int k = 0; k < n; ++k)
-              {
-                const auto col = TrilinosWrappers::global_column_index(E, indices[k]);
-                AssertThrow(mark[col] == types::global_dof_index(row),
-                            ExcMessage("HermiteMultigrid: an entry of the "
-                                       "matrix is not in the pattern given "
-                                       "to setup()"));
-                F.offset.push_back(place[col]);
-              }
-          }
-      }
-    AssertThrow(F.offset.size() == std::size_t(E.NumMyNonzeros()),
-                ExcMessage("HermiteMultigrid: the matrix pattern changed "
-                           "without a new setup()"));
-    std::size_t e = 0;
-    for (int r = 0; r < n_rows; ++r)
-      {
-        E.ExtractMyRowView(r, n, values, indices);
-        // deal.II stores the diagonal first and a row contiguously
-        float *row =
-          &F.matrix.diag_element(TrilinosWrappers::global_row_index(E, r));
-        for (int k = 0; k < n; ++k, ++e)
-          row[F.offset[e]] = static_cast<float>(values[k]);
-      }
-  }
 
 
 
@@ -753,10 +691,11 @@ namespace NitscheContact
     status_of_levels.clear();
     nq               = 0; // set_matrices() comes next
     fine_vertex_dofs = vertex_dofs;
-    has_top           = false;
-    top_offsets_ready = false;
-    top_matrix        = nullptr;
-    top.matrix.clear();
+    has_top = false;
+    top_nq  = 0;
+    top_dofs.clear();
+    top_constrained.clear();
+    top_status_of_levels.clear();
     top_prolong.matrix.clear();
     top_restrict.matrix.clear();
 
@@ -1081,17 +1020,22 @@ namespace NitscheContact
 
   void
   HermiteMultigrid::setup_top(
+    const unsigned int                          nx_top,
+    const unsigned int                          ny_top,
+    const std::vector<bool>                    &constrained,
+    const std::vector<types::global_dof_index> &dofs,
     const std::vector<std::tuple<types::global_dof_index,
                                  types::global_dof_index,
-                                 double>> &prolongation,
-    const DynamicSparsityPattern          &pattern)
+                                 double>>      &prolongation)
   {
     Assert(transfer && !multigrid,
            ExcMessage("HermiteMultigrid::setup_top() after setup()"));
-    const types::global_dof_index n_top = pattern.n_rows(),
+    const types::global_dof_index n_top = 4 * std::size_t(nx_top + 1) *
+                                          (ny_top + 1),
                                   n_bfs = level_sets[L].size();
-    top.pattern.copy_from(pattern);
-    top.matrix.reinit(top.pattern);
+    AssertThrow(constrained.size() == n_top && dofs.size() == n_top,
+                ExcMessage("HermiteMultigrid::setup_top: four dofs per "
+                           "vertex expected"));
     DynamicSparsityPattern p(n_top, n_bfs), pt(n_bfs, n_top);
     for (const auto &[i, j, a] : prolongation)
       {
@@ -1109,19 +1053,25 @@ namespace NitscheContact
         top_restrict.matrix.add(j, i, float(a));
       }
     level_sets.push_back(complete_index_set(n_top));
-    has_top           = true;
-    top_offsets_ready = false;
+    top_constrained = constrained;
+    top_dofs        = dofs;
+    top_nx          = nx_top;
+    top_ny          = ny_top;
+    has_top         = true;
   }
 
 
 
   void
-  HermiteMultigrid::set_top_matrix(const MatrixType &A)
+  HermiteMultigrid::set_top_matrices(
+    const FullMatrix<double>              &cell_matrix,
+    const std::vector<FullMatrix<double>> &point_matrices)
   {
     AssertThrow(has_top, ExcMessage("HermiteMultigrid: no top level"));
-    copy_matrix(A, top, !top_offsets_ready);
-    top_offsets_ready = true;
-    top_matrix        = &A;
+    top.reinit(top_nx, top_ny, cell_matrix, point_matrices, top_constrained);
+    top_nq = point_matrices.size();
+    top_status_of_levels.clear();
+    status_of_levels.clear();
   }
 
 
@@ -1143,6 +1093,33 @@ namespace NitscheContact
     // (no point active yet: on constrained dofs the diagonal stays)
     fine.diagonal(fine_diagonal);
     status_of_levels.clear();
+  }
+
+
+
+  void
+  HermiteMultigrid::set_status(const std::vector<unsigned char> &top_status,
+                               const std::vector<unsigned char> &status)
+  {
+    AssertThrow(has_top && top_nq > 0 &&
+                  top_status.size() == std::size_t(top_nx) * top_ny * top_nq,
+                ExcMessage("HermiteMultigrid::set_status: no top level or " +
+                           std::to_string(top_status.size()) +
+                           " point states for its cells"));
+    if (top_status != top_status_of_levels)
+      {
+        for (std::size_t c = 0; c < std::size_t(top_nx) * top_ny; ++c)
+          if (top_status_of_levels.empty() ||
+              !std::equal(&top_status[top_nq * c],
+                          &top_status[top_nq * (c + 1)],
+                          &top_status_of_levels[top_nq * c]))
+            top.set_cell(c, &top_status[top_nq * c]);
+        top.finish();
+        top_status_of_levels = top_status;
+        // the smoother of the top level follows in set_status(status)
+        // (which the same points changing always reaches)
+      }
+    set_status(status);
   }
 
 
@@ -1354,7 +1331,7 @@ namespace NitscheContact
     const auto apply = [&](const unsigned int l, LevelVector &y,
                            const LevelVector &x) {
       if (l > L)
-        top.matrix.vmult(y, x);
+        top.vmult(y, x);
       else if (l == L && L > 0)
         fine.vmult(y, x);
       else if (l == L)
@@ -1368,74 +1345,61 @@ namespace NitscheContact
       else
         levels[l].matrix.vmult(y, x);
     };
+    // the finest operator (which the outer Krylov method applies) against
+    // the assembled matrix, on the rows of unconstrained dofs
+    {
+      const HermiteCellOperator &op = has_top ? top : fine;
+      const std::vector<types::global_dof_index> &dofs =
+        has_top ? top_dofs : fine_vertex_dofs;
+      const std::vector<bool> &constrained =
+        has_top ? top_constrained : level_constrained[L];
+      const IndexSet owned = complete_index_set(A.m());
+      VectorType     x(owned, A.get_mpi_communicator()),
+        y(owned, A.get_mpi_communicator());
+      pseudo_random(x, 4321);
+      A.vmult(y, x);
+      Vector<double> xs(op.m()), ys(op.m());
+      for (std::size_t s = 0; s < dofs.size(); ++s)
+        if (dofs[s] != numbers::invalid_dof_index)
+          xs[s] = x[dofs[s]];
+      op.vmult(ys, xs);
+      double diff = 0., norm = 0.;
+      for (std::size_t s = 0; s < dofs.size(); ++s)
+        if (!constrained[s])
+          {
+            const double a = y[dofs[s]];
+            diff += (ys[s] - a) * (ys[s] - a);
+            norm += a * a;
+          }
+      defect = std::sqrt(diff / norm);
+      if (!has_top && L == 0)
+        {
+          // the single level, factorised by the coarse solver, against
+          // the finest operator
+          Vector<double> y0(fine.m());
+          level_double[0].vmult(y0, xs);
+          y0 -= ys;
+          defect = std::max(defect, y0.l2_norm() / ys.l2_norm());
+        }
+    }
     if (has_top)
       {
-        // the top matrix copy against A, and the finest BFS operator
-        // against P_top^T A_top P_top
-        AssertThrow(&A == top_matrix,
-                    ExcMessage("HermiteMultigrid::galerkin_defect: A is not "
-                               "the matrix of the top level"));
-        const IndexSet owned = complete_index_set(A.m());
-        VectorType     x(owned, A.get_mpi_communicator()),
-          y(owned, A.get_mpi_communicator());
-        pseudo_random(x, 4321);
-        A.vmult(y, x);
-        LevelVector xf(A.m()), yf(A.m());
-        std::copy(x.begin(), x.end(), xf.begin());
-        top.matrix.vmult(yf, xf);
-        double diff = 0., norm = 0.;
-        for (types::global_dof_index i = 0; i < A.m(); ++i)
-          {
-            diff += (yf[i] - y[i]) * (yf[i] - y[i]);
-            norm += y[i] * y[i];
-          }
-        defect = std::sqrt(diff / norm);
-
-        // (P_top has no columns for the constrained BFS dofs, which are
-        // decoupled on both sides: compare on the others)
-        const types::global_dof_index n = level_sets[L].size();
-        LevelVector xc(n), yc(n), zc(n), p(A.m()), q(A.m());
+        // the finest BFS operator against P_top^T A_top P_top (P_top has no
+        // columns for the constrained BFS dofs, which are decoupled on both
+        // sides: compare on the others)
+        const types::global_dof_index n = level_sets[L].size(),
+                                      nt = top.m();
+        LevelVector xc(n), yc(n), zc(n), p(nt), q(nt);
         pseudo_random(xc, 2468);
         for (types::global_dof_index i = 0; i < n; ++i)
           if (level_constrained[L][i])
             xc[i] = 0.f;
         apply(L, yc, xc);
         top_prolong.matrix.vmult(p, xc);
-        top.matrix.vmult(q, p);
+        top.vmult(q, p);
         top_restrict.matrix.vmult(zc, q);
         zc -= yc;
         defect = std::max(defect, double(zc.l2_norm() / yc.l2_norm()));
-      }
-    else
-      {
-        // the finest operator (which the outer Krylov method applies)
-        // against the assembled matrix
-        const IndexSet owned = complete_index_set(A.m());
-        VectorType     x(owned, A.get_mpi_communicator()),
-          y(owned, A.get_mpi_communicator());
-        pseudo_random(x, 4321);
-        A.vmult(y, x);
-        Vector<double> xs(fine.m()), ys(fine.m());
-        for (std::size_t s = 0; s < fine_vertex_dofs.size(); ++s)
-          xs[s] = x[fine_vertex_dofs[s]];
-        fine.vmult(ys, xs);
-        double diff = 0., norm = 0.;
-        for (std::size_t s = 0; s < fine_vertex_dofs.size(); ++s)
-          {
-            const double a = y[fine_vertex_dofs[s]];
-            diff += (ys[s] - a) * (ys[s] - a);
-            norm += a * a;
-          }
-        defect = std::sqrt(diff / norm);
-        if (L == 0)
-          {
-            // the single level, factorised by the coarse solver, against
-            // the finest operator
-            Vector<double> y0(fine.m());
-            level_double[0].vmult(y0, xs);
-            y0 -= ys;
-            defect = std::max(defect, y0.l2_norm() / ys.l2_norm());
-          }
       }
     for (unsigned int l = 0; l < L; ++l)
       {

@@ -359,11 +359,17 @@ namespace NitscheContact
       }
     constraints.close();
 
-    DynamicSparsityPattern dsp(dof_handler.n_dofs());
-    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
-    const IndexSet owned = complete_index_set(dof_handler.n_dofs());
-    constant_matrix.reinit(owned, owned, dsp, comm);
-    system_matrix.reinit(owned, owned, dsp, comm);
+    assembled_matrix = !settings.multigrid || settings.check_multigrid;
+    constant_matrix.clear();
+    system_matrix.clear();
+    if (assembled_matrix)
+      {
+        DynamicSparsityPattern dsp(dof_handler.n_dofs());
+        DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+        const IndexSet owned = complete_index_set(dof_handler.n_dofs());
+        constant_matrix.reinit(owned, owned, dsp, comm);
+        system_matrix.reinit(owned, owned, dsp, comm);
+      }
 
     load.reinit(dof_handler.n_dofs());
     residual.reinit(dof_handler.n_dofs());
@@ -560,8 +566,9 @@ namespace NitscheContact
   {
     // Constant matrix: bulk stiffness + theta-terms at all contact points;
     // load vector with 2x2 Gauss (exact for bilinear loads).
-    constant_matrix = 0.;
-    load            = 0.;
+    if (assembled_matrix)
+      constant_matrix = 0.;
+    load = 0.;
     const unsigned int n = fe.n_dofs_per_cell();
     std::vector<types::global_dof_index> dofs(n);
     Vector<double>                       cell_load(n);
@@ -586,13 +593,17 @@ namespace NitscheContact
             for (unsigned int i = 0; i < n; ++i)
               cell_load(i) += f * values[q][i];
           }
-        constraints.distribute_local_to_global(constant_cell_matrix,
-                                               cell_load,
-                                               dofs,
-                                               constant_matrix,
-                                               load);
+        if (assembled_matrix)
+          constraints.distribute_local_to_global(constant_cell_matrix,
+                                                 cell_load,
+                                                 dofs,
+                                                 constant_matrix,
+                                                 load);
+        else
+          constraints.distribute_local_to_global(cell_load, dofs, load);
       }
-    constant_matrix.compress(VectorOperation::add);
+    if (assembled_matrix)
+      constant_matrix.compress(VectorOperation::add);
   }
 
 
@@ -686,7 +697,10 @@ namespace NitscheContact
     Vector<double>     u(n), cell_residual(n), tmp(n);
     FullMatrix<double> cell_matrix(n, n);
 
-    if (with_matrix)
+    // (with the multigrid the Newton matrix is applied from its cell
+    // matrices and assembled only to check it)
+    const bool build_matrix = with_matrix && assembled_matrix;
+    if (build_matrix)
       system_matrix.copy_from(constant_matrix);
     residual = 0.;
 
@@ -717,7 +731,7 @@ namespace NitscheContact
               ++counts.n_slip;
             else
               ++counts.n_stick;
-            if (!any_active && with_matrix)
+            if (!any_active && build_matrix)
               cell_matrix = 0.;
             any_active = true;
             // Full kernel contribution instead of the theta-terms already
@@ -726,21 +740,21 @@ namespace NitscheContact
                                    st,
                                    contact_shapes[q],
                                    contact_JxW[q],
-                                   with_matrix ? &cell_matrix : nullptr,
+                                   build_matrix ? &cell_matrix : nullptr,
                                    cell_residual);
             theta_matrices[q].vmult(tmp, u);
             cell_residual -= tmp;
-            if (with_matrix)
+            if (build_matrix)
               cell_matrix.add(-1., theta_matrices[q]);
           }
         cell_residual *= -1.;
         constraints.distribute_local_to_global(cell_residual, dofs, residual);
-        if (with_matrix && any_active)
+        if (build_matrix && any_active)
           constraints.distribute_local_to_global(cell_matrix,
                                                  dofs,
                                                  system_matrix);
       }
-    if (with_matrix)
+    if (build_matrix)
       system_matrix.compress(VectorOperation::add);
     residual.add(load_factor, load);
 
@@ -853,10 +867,11 @@ namespace NitscheContact
                                         m) = at_point[p][c][m];
           }
       }
-    // The global prolongation of the V-cycle, vertex by vertex from the
-    // basis values at the nine points (independent of the cell matrices
-    // above, so that 'Check multigrid' tests those).
-    std::vector<types::global_dof_index> vertex_dof(3 * (nx + 1) * (ny + 1));
+    // The top level in a structured numbering of four dofs per vertex:
+    // 4 (I + (nx+1) J) + c for component c of vertex (I, J), c = 3 unused.
+    const std::size_t n_top = 4 * std::size_t(nx + 1) * (ny + 1);
+    structured_dofs.assign(n_top, numbers::invalid_dof_index);
+    std::vector<bool> top_constrained(n_top, true);
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     for (unsigned int j = 0; j < ny; ++j)
       for (unsigned int i = 0; i < nx; ++i)
@@ -864,9 +879,16 @@ namespace NitscheContact
           cell_grid[std::size_t(j) * nx + i]->get_dof_indices(dofs);
           for (unsigned int v = 0; v < 4; ++v)
             for (unsigned int c = 0; c < 3; ++c)
-              vertex_dof[3 * ((i + v % 2) + (nx + 1) * (j + v / 2)) + c] =
-                dofs[fe.component_to_system_index(c, v)];
+              {
+                const std::size_t s =
+                  4 * ((i + v % 2) + (nx + 1) * (j + v / 2)) + c;
+                structured_dofs[s] = dofs[fe.component_to_system_index(c, v)];
+                top_constrained[s] = constraints.is_constrained(structured_dofs[s]);
+              }
         }
+    // The global prolongation of the V-cycle, vertex by vertex from the
+    // basis values at the nine points (not from the cell prolongations
+    // above, so that 'Check multigrid' tests those).
     std::vector<std::tuple<types::global_dof_index,
                            types::global_dof_index,
                            double>>
@@ -879,9 +901,8 @@ namespace NitscheContact
           const auto &basis = at_point[(I - 2 * ic) + 3 * (J - 2 * jc)];
           for (unsigned int c = 0; c < 3; ++c)
             {
-              const types::global_dof_index d =
-                vertex_dof[3 * (I + (nx + 1) * J) + c];
-              if (constraints.is_constrained(d))
+              const types::global_dof_index s = 4 * (I + (nx + 1) * J) + c;
+              if (top_constrained[s])
                 continue;
               for (unsigned int m = 0; m < 16; ++m)
                 {
@@ -890,13 +911,11 @@ namespace NitscheContact
                     4 * ((ic + v % 2) + nvx * (jc + v / 2)) + k;
                   if (std::abs(basis[c][m]) > 1e-12 * (1. + Hx + Hy) &&
                       !constrained[g])
-                    entries.emplace_back(d, g, basis[c][m]);
+                    entries.emplace_back(s, g, basis[c][m]);
                 }
             }
         }
-    DynamicSparsityPattern dsp(dof_handler.n_dofs());
-    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
-    multigrid->setup_top(entries, dsp);
+    multigrid->setup_top(nx, ny, top_constrained, structured_dofs, entries);
   }
 
 
@@ -930,9 +949,11 @@ namespace NitscheContact
       restrict_to_parent(constant_cell_matrix, pos, cell_matrix);
     std::vector<FullMatrix<double>> point_matrices(4 * nq,
                                                    FullMatrix<double>(16, 16));
+    std::vector<FullMatrix<double>> active_minus_theta(nq);
     for (unsigned int q = 0; q < nq; ++q)
       {
-        FullMatrix<double> m(n, n);
+        FullMatrix<double> &m = active_minus_theta[q];
+        m.reinit(n, n);
         add_point_contribution(in, active, contact_shapes[q], contact_JxW[q],
                                &m, dummy);
         m.add(-1., theta_matrices[q]);
@@ -940,6 +961,28 @@ namespace NitscheContact
           restrict_to_parent(m, pos, point_matrices[pos * nq + q]);
       }
     multigrid->set_matrices(cell_matrix, point_matrices);
+
+    // The top level: the same cell matrices in the local order 4 v + c of
+    // the structured numbering (c = 3 unused: a unit diagonal, masked as a
+    // constrained dof).
+    std::array<unsigned int, 12> local;
+    for (unsigned int v = 0; v < 4; ++v)
+      for (unsigned int c = 0; c < 3; ++c)
+        local[fe.component_to_system_index(c, v)] = 4 * v + c;
+    const auto embed = [&](const FullMatrix<double> &m) {
+      FullMatrix<double> e(16, 16);
+      for (unsigned int a = 0; a < 12; ++a)
+        for (unsigned int b = 0; b < 12; ++b)
+          e(local[a], local[b]) = m(a, b);
+      return e;
+    };
+    FullMatrix<double> top_cell = embed(constant_cell_matrix);
+    for (unsigned int v = 0; v < 4; ++v)
+      top_cell(4 * v + 3, 4 * v + 3) = 1.;
+    std::vector<FullMatrix<double>> top_points;
+    for (unsigned int q = 0; q < nq; ++q)
+      top_points.push_back(embed(active_minus_theta[q]));
+    multigrid->set_top_matrices(top_cell, top_points);
   }
 
 
@@ -950,30 +993,7 @@ namespace NitscheContact
     // The levels follow the Newton matrix: the MITC4 matrix itself on top,
     // the contact status regrouped by BFS cell (the points of its four
     // children, child pos = px + 2 py first) below it.
-    const unsigned int nq = contact_quadrature.size();
-    multigrid->set_top_matrix(system_matrix);
-    std::vector<unsigned char> grouped(previous_status.size());
-    for (unsigned int jc = 0; jc < ny / 2; ++jc)
-      for (unsigned int ic = 0; ic < nx / 2; ++ic)
-        for (unsigned int pos = 0; pos < 4; ++pos)
-          {
-            const std::size_t child =
-              (2 * ic + pos % 2) + std::size_t(nx) * (2 * jc + pos / 2);
-            const std::size_t parent = ic + std::size_t(nx / 2) * jc;
-            std::copy(previous_status.begin() + nq * child,
-                      previous_status.begin() + nq * (child + 1),
-                      grouped.begin() + nq * (4 * parent + pos));
-          }
-    multigrid->set_status(grouped);
-    if (settings.check_multigrid)
-      {
-        const double defect = multigrid->galerkin_defect(system_matrix);
-        AssertThrow(defect < 1e-4,
-                    ExcMessage("internal error: the Mindlin multigrid "
-                               "levels are not the Galerkin products of the "
-                               "Newton matrix (relative defect " +
-                               number_to_string(defect) + ")"));
-      }
+    update_multigrid();
 
     // Inexact Newton, as in the Kirchhoff model: a looser solve while
     // contact points change status, relative to the Newton tolerance on a
@@ -995,14 +1015,19 @@ namespace NitscheContact
                      std::max(settings.krylov_tolerance,
                               0.1 * prm.tolerance * current / previous));
       }
-    x.reinit(residual.size());
-    SolverControl control(2000, tolerance * residual.l2_norm());
+    // in the structured numbering of the top level
+    Vector<double> b(structured_dofs.size()), xs(structured_dofs.size());
+    for (std::size_t k = 0; k < structured_dofs.size(); ++k)
+      if (structured_dofs[k] != numbers::invalid_dof_index)
+        b[k] = residual[structured_dofs[k]];
+    const HermiteCellOperator &A = multigrid->fine_operator();
+    SolverControl control(2000, tolerance * b.l2_norm());
     try
       {
         if (prm.theta == 1.)
           {
             SolverCG<Vector<double>> cg(control);
-            cg.solve(system_matrix, x, residual, *multigrid);
+            cg.solve(A, xs, b, *multigrid);
           }
         else
           {
@@ -1011,7 +1036,7 @@ namespace NitscheContact
             SolverGMRES<Vector<double>> gmres(
               control,
               SolverGMRES<Vector<double>>::AdditionalData(100, true));
-            gmres.solve(system_matrix, x, residual, *multigrid);
+            gmres.solve(A, xs, b, *multigrid);
           }
       }
     catch (const SolverControl::NoConvergence &e)
@@ -1025,7 +1050,67 @@ namespace NitscheContact
           number_to_string(e.last_residual) +
           "); use 'Linear solver = Amesos_Mumps'");
       }
+    x.reinit(residual.size());
+    for (std::size_t k = 0; k < structured_dofs.size(); ++k)
+      if (structured_dofs[k] != numbers::invalid_dof_index)
+        x[structured_dofs[k]] = xs[k];
     return control.last_step();
+  }
+
+
+
+  void
+  MindlinModel::update_multigrid() const
+  {
+    // The levels follow the Newton matrix of the last assembled status: the
+    // MITC4 cells on top, the status regrouped by BFS cell (the points of
+    // its four children, child pos = px + 2 py first) below them.
+    const unsigned int         nq = contact_quadrature.size();
+    std::vector<unsigned char> grouped(previous_status.size());
+    for (unsigned int jc = 0; jc < ny / 2; ++jc)
+      for (unsigned int ic = 0; ic < nx / 2; ++ic)
+        for (unsigned int pos = 0; pos < 4; ++pos)
+          {
+            const std::size_t child =
+              (2 * ic + pos % 2) + std::size_t(nx) * (2 * jc + pos / 2);
+            const std::size_t parent = ic + std::size_t(nx / 2) * jc;
+            std::copy(previous_status.begin() + nq * child,
+                      previous_status.begin() + nq * (child + 1),
+                      grouped.begin() + nq * (4 * parent + pos));
+          }
+    multigrid->set_status(previous_status, grouped);
+    if (settings.check_multigrid)
+      {
+        const double defect = multigrid->galerkin_defect(system_matrix);
+        AssertThrow(defect < 1e-4,
+                    ExcMessage("internal error: the Mindlin multigrid "
+                               "operators are not the Newton matrix and its "
+                               "Galerkin products (relative defect " +
+                               number_to_string(defect) + ")"));
+      }
+  }
+
+
+
+  void
+  MindlinModel::jacobian_vmult(Vector<double>       &y,
+                               const Vector<double> &x) const
+  {
+    if (assembled_matrix)
+      {
+        system_matrix.vmult(y, x);
+        return;
+      }
+    update_multigrid();
+    Vector<double> xs(structured_dofs.size()), ys(structured_dofs.size());
+    for (std::size_t k = 0; k < structured_dofs.size(); ++k)
+      if (structured_dofs[k] != numbers::invalid_dof_index)
+        xs[k] = x[structured_dofs[k]];
+    multigrid->fine_operator().vmult(ys, xs);
+    y.reinit(x.size());
+    for (std::size_t k = 0; k < structured_dofs.size(); ++k)
+      if (structured_dofs[k] != numbers::invalid_dof_index)
+        y[structured_dofs[k]] = ys[k];
   }
 
 

@@ -112,6 +112,13 @@ namespace NitscheContact
     void
     finish();
 
+    /// number of contact points per cell
+    unsigned int
+    n_points() const
+    {
+      return nq;
+    }
+
     /// dst = A src (float or double; not re-entrant: one product at a time
     /// per precision, it uses a buffer of the object)
     template <typename Number>
@@ -225,35 +232,50 @@ namespace NitscheContact
     /// cells whose status changed (and return at once if none did).
     void
     set_status(const std::vector<unsigned char> &status);
+    /// The same with a top level: `top_status` per top cell, `status` per
+    /// BFS cell (which the caller regroups from the top cells).
+    void
+    set_status(const std::vector<unsigned char> &top_status,
+               const std::vector<unsigned char> &status);
 
     /// An extra finest level above the BFS levels, for another
     /// discretisation on the mesh refined once more (the Mindlin model's
     /// MITC4 plate, whose multigrid uses the BFS plate as its coarse
-    /// space): `prolongation` gives the entries (top dof, structured BFS dof
-    /// of the finest BFS level, value) of P_top, `pattern` the sparsity of
-    /// its matrices. Call after setup() and before set_matrices(); the
-    /// cell matrices given to set_matrices() must make the finest BFS
-    /// operator P_top^T A_top P_top (galerkin_defect() checks it).
+    /// space): an nx_top x ny_top mesh whose Newton matrix is given, like
+    /// the BFS one, as cell matrices in a structured numbering of four dofs
+    /// per vertex (set_top_matrices(), set_status()). `constrained` flags
+    /// its constrained (and unused) dofs, `dofs[s]` is the caller's index of
+    /// structured dof s (numbers::invalid_dof_index if unused; for
+    /// galerkin_defect()), and `prolongation` gives the entries (top dof,
+    /// BFS dof, value) of P_top from the finest BFS level. Call after
+    /// setup() and before set_matrices(). The cell matrices given to
+    /// set_matrices() must make the finest BFS operator P_top^T A_top P_top
+    /// (galerkin_defect() checks it).
     void
-    setup_top(const std::vector<std::tuple<dealii::types::global_dof_index,
+    setup_top(unsigned int                                        nx_top,
+              unsigned int                                        ny_top,
+              const std::vector<bool>                            &constrained,
+              const std::vector<dealii::types::global_dof_index> &dofs,
+              const std::vector<std::tuple<dealii::types::global_dof_index,
                                            dealii::types::global_dof_index,
-                                           double>> &prolongation,
-              const dealii::DynamicSparsityPattern    &pattern);
+                                           double>> &prolongation);
 
-    /// The current matrix of the extra finest level (copied to single
-    /// precision; kept by reference for galerkin_defect()). Call before
-    /// set_status().
+    /// The cell matrices of the top level (as set_matrices()).
     void
-    set_top_matrix(const MatrixType &A);
+    set_top_matrices(
+      const dealii::FullMatrix<double>              &cell_matrix,
+      const std::vector<dealii::FullMatrix<double>> &point_matrices);
 
     /// Largest relative deviation |A_l x - P_l^T A_{l+1} P_l x| / |A_l x|
     /// over the coarse levels l for a fixed pseudo-random x, computed with
     /// the global single-precision transfer matrices of the V-cycle (built
     /// independently of the cell-by-cell restriction), and of the finest
     /// operator from A (the assembled Newton matrix of the current status;
-    /// with a top level, A is its matrix and the finest BFS operator is
-    /// checked against P_top^T A P_top; with a single level, that level
-    /// against the finest operator too): about 1e-7 when all is consistent.
+    /// with a top level, A is its matrix, compared with the top operator,
+    /// and the finest BFS operator is checked against P_top^T A_top P_top;
+    /// with a single level, that level against the finest operator too;
+    /// rows of constrained dofs, decoupled, are not compared): about 1e-7
+    /// when all is consistent.
     double
     galerkin_defect(const MatrixType &A) const;
 
@@ -264,11 +286,12 @@ namespace NitscheContact
     void
     vmult(dealii::Vector<double> &dst, const dealii::Vector<double> &src) const;
 
-    /// The Newton matrix of the last set_status() (structured numbering).
+    /// The Newton matrix of the last set_status() (structured numbering):
+    /// the top level's if there is one, else the finest BFS level's.
     const HermiteCellOperator &
     fine_operator() const
     {
-      return fine;
+      return has_top ? top : fine;
     }
 
     unsigned int
@@ -295,15 +318,8 @@ namespace NitscheContact
     {
       dealii::SparsityPattern     pattern;
       dealii::SparseMatrix<float> matrix;
-      /// (top level) the place of the e-th stored entry of the Trilinos
-      /// matrix (row by row) in the deal.II row, counted from the diagonal
-      std::vector<unsigned int> offset;
     };
 
-    /// Copy the values of A into F, whose pattern contains that of A; with
-    /// new_offsets first compute F.offset.
-    static void
-    copy_matrix(const MatrixType &A, FloatMatrix &F, bool new_offsets);
     /// the finest level of the V-cycle: L, or L + 1 with a top level
     unsigned int
     max_level() const
@@ -377,11 +393,15 @@ namespace NitscheContact
     std::vector<dealii::SparseMatrix<double>> level_double;
     /// single-precision prolongation (l -> l+1) and its transpose
     std::vector<FloatMatrix> prolong_f, restrict_f;
-    /// the extra finest level: its matrix, P_top and P_top^T
-    bool              has_top = false;
-    FloatMatrix       top, top_prolong, top_restrict;
-    bool              top_offsets_ready = false;
-    const MatrixType *top_matrix        = nullptr;
+    /// the extra finest level: its operator, P_top and P_top^T, the
+    /// caller's dof of each of its structured dofs, its status
+    bool                                         has_top = false;
+    HermiteCellOperator                          top;
+    FloatMatrix                                  top_prolong, top_restrict;
+    std::vector<dealii::types::global_dof_index> top_dofs;
+    std::vector<bool>                            top_constrained;
+    std::vector<unsigned char>                   top_status_of_levels;
+    unsigned int top_nq = 0, top_nx = 0, top_ny = 0;
 
     std::unique_ptr<Transfer>                  transfer;
     std::unique_ptr<LevelMatrices>             level_matrices;

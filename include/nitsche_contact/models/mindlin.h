@@ -119,10 +119,7 @@ namespace NitscheContact
     }
     void
     jacobian_vmult(dealii::Vector<double> &y,
-                   const dealii::Vector<double> &x) const
-    {
-      system_matrix.vmult(y, x);
-    }
+                   const dealii::Vector<double> &x) const;
     const dealii::AffineConstraints<double> &
     get_constraints() const
     {
@@ -188,6 +185,10 @@ namespace NitscheContact
     /// Krylov iterations.
     unsigned int
     solve_multigrid(dealii::Vector<double> &x);
+    /// Bring the multigrid to the contact status of the last assembled
+    /// Newton matrix (and check it if asked).
+    void
+    update_multigrid() const;
     /// The cell containing p (Cartesian index lookup), or end().
     dealii::DoFHandler<2>::active_cell_iterator
     locate(const dealii::Point<2> &p, dealii::Point<2> &unit_point) const;
@@ -240,6 +241,12 @@ namespace NitscheContact
     /// MITC4 plate as its extra finest level
     std::unique_ptr<FE_BicubicHermite<2>>  bfs; // (used by multigrid)
     std::unique_ptr<HermiteMultigrid>      multigrid;
+    /// whether system_matrix is assembled (direct solvers, or the check of
+    /// the multigrid)
+    bool                                   assembled_matrix = true;
+    /// multigrid: the DoFHandler index of structured dof
+    /// 4 (I + (nx+1) J) + c (component c at vertex (I, J); c = 3 unused)
+    std::vector<dealii::types::global_dof_index> structured_dofs;
     /// the 12 x 16 prolongations from a BFS cell to its child in position
     /// pos = px + 2 py (row: MITC4 local dof; column: BFS local dof 4 v + k)
     std::array<dealii::FullMatrix<double>, 4> child_prolongation;
