@@ -4,7 +4,9 @@
 #include <deal.II/lac/diagonal_matrix.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_index_access.h>
+#include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/sparse_direct.h>
 
 #include <nitsche_contact/models/hermite_multigrid.h>
@@ -1414,6 +1416,78 @@ namespace NitscheContact
         defect = std::max(defect, double(z.l2_norm() / y.l2_norm()));
       }
     return defect;
+  }
+
+
+
+  double
+  HermiteMultigrid::newton_step_tolerance(const bool   settled,
+                                          const double krylov_tolerance,
+                                          const double loose,
+                                          const double newton_tolerance,
+                                          const double previous_correction_norm,
+                                          const double solution_norm)
+  {
+    if (!settled)
+      return std::max(krylov_tolerance, loose);
+    if (previous_correction_norm > 0. && solution_norm > 0.)
+      return std::min(loose,
+                      std::max(krylov_tolerance,
+                               0.1 * newton_tolerance * solution_norm /
+                                 previous_correction_norm));
+    return krylov_tolerance;
+  }
+
+
+
+  unsigned int
+  HermiteMultigrid::solve(const Vector<double> &b,
+                          Vector<double>       &x,
+                          const double          tolerance,
+                          const bool            symmetric) const
+  {
+    const std::vector<types::global_dof_index> &dofs =
+      has_top ? top_dofs : fine_vertex_dofs;
+    const HermiteCellOperator &A = fine_operator();
+    Vector<double>             bs(dofs.size()), xs(dofs.size());
+    for (std::size_t k = 0; k < dofs.size(); ++k)
+      if (dofs[k] != numbers::invalid_dof_index)
+        bs[k] = b[dofs[k]];
+    SolverControl control(2000, tolerance * bs.l2_norm());
+    if (symmetric)
+      {
+        SolverCG<Vector<double>> cg(control);
+        cg.solve(A, xs, bs, *this);
+      }
+    else
+      {
+        SolverGMRES<Vector<double>> gmres(
+          control, SolverGMRES<Vector<double>>::AdditionalData(100, true));
+        gmres.solve(A, xs, bs, *this);
+      }
+    x.reinit(b.size());
+    for (std::size_t k = 0; k < dofs.size(); ++k)
+      if (dofs[k] != numbers::invalid_dof_index)
+        x[dofs[k]] = xs[k];
+    return control.last_step();
+  }
+
+
+
+  void
+  HermiteMultigrid::apply(const Vector<double> &x, Vector<double> &y) const
+  {
+    const std::vector<types::global_dof_index> &dofs =
+      has_top ? top_dofs : fine_vertex_dofs;
+    Vector<double> xs(dofs.size()), ys(dofs.size());
+    for (std::size_t k = 0; k < dofs.size(); ++k)
+      if (dofs[k] != numbers::invalid_dof_index)
+        xs[k] = x[dofs[k]];
+    fine_operator().vmult(ys, xs);
+    y.reinit(x.size());
+    for (std::size_t k = 0; k < dofs.size(); ++k)
+      if (dofs[k] != numbers::invalid_dof_index)
+        y[dofs[k]] = ys[k];
   }
 
 

@@ -8,9 +8,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
-#include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/numerics/data_out.h>
 
@@ -398,8 +396,8 @@ namespace NitscheContact
       {
         // finest-level dof of (vertex (i, j), derivative k), from the cells
         // in lexicographic order (local dof 4 v + k, v = vx + 2 vy)
-        std::vector<types::global_dof_index> &vertex_dofs = structured_dofs;
-        vertex_dofs.resize(4 * (nx + 1) * (ny + 1));
+        std::vector<types::global_dof_index> vertex_dofs(4 * (nx + 1) *
+                                                         (ny + 1));
         for (unsigned int iy = 0; iy < ny; ++iy)
           for (unsigned int ix = 0; ix < nx; ++ix)
             for (unsigned int v = 0; v < 4; ++v)
@@ -960,51 +958,22 @@ namespace NitscheContact
         update_multigrid();
         // Inexact Newton: while contact points still change status the
         // step is only a direction towards the next status, and a loose
-        // solve is enough. On a settled status the correction only has to
-        // be accurate relative to the Newton tolerance: with the previous
-        // correction |dU_prev|_a (still in 'increment') as the size of this
-        // one, a relative residual of 0.1 tol |U|_a / |dU_prev|_a is meant
-        // to leave an error of about a tenth of what the Newton test
-        // accepts (a heuristic: the residual is measured in l2, not in the
-        // energy norm; CG from zero never overestimates |dU|_a, so the
-        // Newton test stays safe). At most the loose tolerance, at least
-        // the Krylov tolerance, and the Krylov tolerance itself when there
-        // is no previous correction. (The first solve of a mesh counts
-        // every point as changed and uses the loose tolerance.)
-        double tolerance = std::max(krylov_tolerance, loose_krylov_tolerance);
-        if (status_settled)
-          {
-            const double previous = energy_norm(increment);
-            const double current  = energy_norm(solution);
-            tolerance             = krylov_tolerance;
-            if (previous > 0. && current > 0.)
-              tolerance = std::min(
-                loose_krylov_tolerance,
-                std::max(krylov_tolerance,
-                         0.1 * prm.tolerance * current / previous));
-          }
-        // in the structured numbering of the multigrid
-        Vector<double> b(structured_dofs.size()), x(structured_dofs.size());
-        for (std::size_t k = 0; k < structured_dofs.size(); ++k)
-          b[k] = rhs[structured_dofs[k]];
-        const HermiteCellOperator &A = multigrid->fine_operator();
-        SolverControl control(2000, tolerance * b.l2_norm());
+        // solve is enough; on a settled status it is relative to the
+        // Newton tolerance, with the previous correction (still in
+        // 'increment') as the size of this one. (The first solve of a mesh
+        // counts every point as changed and uses the loose tolerance.)
+        const double tolerance = HermiteMultigrid::newton_step_tolerance(
+          status_settled,
+          krylov_tolerance,
+          loose_krylov_tolerance,
+          prm.tolerance,
+          status_settled ? energy_norm(increment) : 0.,
+          status_settled ? energy_norm(solution) : 0.);
         try
           {
-            if (jacobian_is_symmetric())
-              {
-                SolverCG<Vector<double>> cg(control);
-                cg.solve(A, x, b, *multigrid);
-              }
-            else
-              {
-                // right preconditioning: the stopping test sees the true
-                // residual
-                SolverGMRES<Vector<double>> gmres(
-                  control,
-                  SolverGMRES<Vector<double>>::AdditionalData(100, true));
-                gmres.solve(A, x, b, *multigrid);
-              }
+            linear_iterations =
+              multigrid->solve(rhs, increment, tolerance,
+                               jacobian_is_symmetric());
           }
         catch (const SolverControl::NoConvergence &e)
           {
@@ -1017,9 +986,6 @@ namespace NitscheContact
               number_to_string(e.last_residual) +
               "); use 'Linear solver = direct'");
           }
-        linear_iterations = control.last_step();
-        for (std::size_t k = 0; k < structured_dofs.size(); ++k)
-          increment[structured_dofs[k]] = x[k];
       }
     else
       {
@@ -1052,13 +1018,7 @@ namespace NitscheContact
       }
     // the multigrid's operator of the last assembled status
     update_multigrid();
-    Vector<double> xs(structured_dofs.size()), ys(structured_dofs.size());
-    for (std::size_t k = 0; k < structured_dofs.size(); ++k)
-      xs[k] = x[structured_dofs[k]];
-    multigrid->fine_operator().vmult(ys, xs);
-    y.reinit(x.size());
-    for (std::size_t k = 0; k < structured_dofs.size(); ++k)
-      y[structured_dofs[k]] = ys[k];
+    multigrid->apply(x, y);
   }
 
 

@@ -286,6 +286,39 @@ namespace NitscheContact
     void
     vmult(dealii::Vector<double> &dst, const dealii::Vector<double> &src) const;
 
+    /// Krylov tolerance of an inexact Newton step (both plate models):
+    /// `loose` while contact points still change status (max with
+    /// `krylov_tolerance`); on a settled status relative to the Newton
+    /// tolerance, min(loose, max(krylov_tolerance, 0.1 newton_tolerance
+    /// |U|_a / |dU_prev|_a)), meant to leave an error of about a tenth of
+    /// what the Newton test accepts (the residual is measured in l2, not in
+    /// the energy norm; CG from zero never overestimates |dU|_a, so the
+    /// Newton test stays safe); `krylov_tolerance` without a previous
+    /// correction.
+    static double
+    newton_step_tolerance(bool   settled,
+                          double krylov_tolerance,
+                          double loose,
+                          double newton_tolerance,
+                          double previous_correction_norm,
+                          double solution_norm);
+
+    /// Solve A x = b for the Newton matrix A of the last set_status() by CG
+    /// (symmetric) or right-preconditioned GMRES (the stopping test then
+    /// sees the true residual, not the V-cycle-scaled one), one V-cycle per
+    /// iteration, to `tolerance` |b|; b and x in the caller's numbering (the
+    /// `vertex_dofs` of setup(), or the `dofs` of setup_top()). Returns the
+    /// iterations; throws SolverControl::NoConvergence.
+    unsigned int
+    solve(const dealii::Vector<double> &b,
+          dealii::Vector<double>       &x,
+          double                        tolerance,
+          bool                          symmetric) const;
+
+    /// y = A x in the caller's numbering.
+    void
+    apply(const dealii::Vector<double> &x, dealii::Vector<double> &y) const;
+
     /// The Newton matrix of the last set_status() (structured numbering):
     /// the top level's if there is one, else the finest BFS level's.
     const HermiteCellOperator &

@@ -221,9 +221,6 @@ namespace NitscheContact
     /// whether system_matrix is assembled (direct solver, or the check of
     /// the multigrid)
     bool                       assembled_matrix = true;
-    /// multigrid: DoFHandler index of dof k at vertex (i, j) at the
-    /// structured index 4 (i + (nx+1) j) + k
-    std::vector<dealii::types::global_dof_index> structured_dofs;
     /// bending + inactive contact matrix of every cell
     dealii::FullMatrix<double> constant_cell_matrix;
     /// prepare_line_search(): phi'(t) = line_constant + t line_linear +

@@ -244,9 +244,6 @@ namespace NitscheContact
     /// whether system_matrix is assembled (direct solvers, or the check of
     /// the multigrid)
     bool                                   assembled_matrix = true;
-    /// multigrid: the DoFHandler index of structured dof
-    /// 4 (I + (nx+1) J) + c (component c at vertex (I, J); c = 3 unused)
-    std::vector<dealii::types::global_dof_index> structured_dofs;
     /// the 12 x 16 prolongations from a BFS cell to its child in position
     /// pos = px + 2 py (row: MITC4 local dof; column: BFS local dof 4 v + k)
     std::array<dealii::FullMatrix<double>, 4> child_prolongation;
