@@ -662,6 +662,31 @@ namespace NitscheContact
 
 
 
+  template <typename Visitor>
+  void
+  HermiteMultigrid::make_transfer(const types::global_dof_index n_fine,
+                                  const types::global_dof_index n_coarse,
+                                  const Visitor                &visit,
+                                  FloatMatrix                  &p,
+                                  FloatMatrix                  &r)
+  {
+    DynamicSparsityPattern dsp(n_fine, n_coarse), dspt(n_coarse, n_fine);
+    visit([&](types::global_dof_index i, types::global_dof_index j, double) {
+      dsp.add(i, j);
+      dspt.add(j, i);
+    });
+    p.pattern.copy_from(dsp);
+    p.matrix.reinit(p.pattern);
+    r.pattern.copy_from(dspt);
+    r.matrix.reinit(r.pattern);
+    visit([&](types::global_dof_index i, types::global_dof_index j, double a) {
+      p.matrix.set(i, j, static_cast<float>(a));
+      r.matrix.set(j, i, static_cast<float>(a));
+    });
+  }
+
+
+
   HermiteMultigrid::HermiteMultigrid(const FE_BicubicHermite<2> &fe,
                                      MPI_Comm                    comm)
     : fe(fe)
@@ -826,25 +851,11 @@ namespace NitscheContact
                   }
               }
         };
-        FloatMatrix           &pf = prolong_f[l], &rf = restrict_f[l];
-        DynamicSparsityPattern dsp(level_sets[l + 1].size(),
-                                   level_sets[l].size());
-        DynamicSparsityPattern dspt(level_sets[l].size(),
-                                    level_sets[l + 1].size());
-        visit([&](types::global_dof_index i, types::global_dof_index j,
-                  double) {
-          dsp.add(i, j);
-          dspt.add(j, i);
-        });
-        pf.pattern.copy_from(dsp);
-        pf.matrix.reinit(pf.pattern);
-        rf.pattern.copy_from(dspt);
-        rf.matrix.reinit(rf.pattern);
-        visit([&](types::global_dof_index i, types::global_dof_index j,
-                  double a) {
-          pf.matrix.set(i, j, static_cast<float>(a));
-          rf.matrix.set(j, i, static_cast<float>(a));
-        });
+        make_transfer(level_sets[l + 1].size(),
+                      level_sets[l].size(),
+                      visit,
+                      prolong_f[l],
+                      restrict_f[l]);
 
         // The same prolongation restricted to one child cell, for the
         // Galerkin products cell by cell: dof 4 v + k of the child in
@@ -1038,22 +1049,17 @@ namespace NitscheContact
     AssertThrow(constrained.size() == n_top && dofs.size() == n_top,
                 ExcMessage("HermiteMultigrid::setup_top: four dofs per "
                            "vertex expected"));
-    DynamicSparsityPattern p(n_top, n_bfs), pt(n_bfs, n_top);
     for (const auto &[i, j, a] : prolongation)
-      {
-        AssertThrow(i < n_top && j < n_bfs, ExcInternalError());
-        p.add(i, j);
-        pt.add(j, i);
-      }
-    top_prolong.pattern.copy_from(p);
-    top_prolong.matrix.reinit(top_prolong.pattern);
-    top_restrict.pattern.copy_from(pt);
-    top_restrict.matrix.reinit(top_restrict.pattern);
-    for (const auto &[i, j, a] : prolongation)
-      {
-        top_prolong.matrix.add(i, j, float(a));
-        top_restrict.matrix.add(j, i, float(a));
-      }
+      AssertThrow(i < n_top && j < n_bfs, ExcInternalError());
+    make_transfer(
+      n_top,
+      n_bfs,
+      [&](const auto &entry) {
+        for (const auto &[i, j, a] : prolongation)
+          entry(i, j, a);
+      },
+      top_prolong,
+      top_restrict);
     level_sets.push_back(complete_index_set(n_top));
     top_constrained = constrained;
     top_dofs        = dofs;

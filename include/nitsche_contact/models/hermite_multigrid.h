@@ -353,6 +353,16 @@ namespace NitscheContact
       dealii::SparseMatrix<float> matrix;
     };
 
+    /// A prolongation P (n_fine x n_coarse) and its transpose from
+    /// visit(entry), which calls entry(fine dof, coarse dof, value) for
+    /// every entry (twice: for the patterns, then for the values).
+    template <typename Visitor>
+    static void
+    make_transfer(dealii::types::global_dof_index n_fine,
+                  dealii::types::global_dof_index n_coarse,
+                  const Visitor                  &visit,
+                  FloatMatrix                    &p,
+                  FloatMatrix                    &r);
     /// the finest level of the V-cycle: L, or L + 1 with a top level
     unsigned int
     max_level() const
