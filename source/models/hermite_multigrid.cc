@@ -55,6 +55,246 @@ namespace NitscheContact
 
 
 
+  // The two inner loops of HermiteCellOperator::vmult, for x86-64-v3 (AVX2
+  // and FMA: eight float or four double lanes per instruction) and for the
+  // baseline x86-64 (SSE2), chosen at run time by the processor: by GCC
+  // target_clones (the loader picks the clone; external linkage, which its
+  // dispatch needs), or for the float stencil, whose two versions differ,
+  // by a test of the processor.
+  namespace cell_operator_kernels
+  {
+    typedef float  float8 __attribute__((vector_size(32)));
+    typedef double double4 __attribute__((vector_size(32)));
+    typedef int    int8 __attribute__((vector_size(32)));
+
+    /// The interior vertices (1 <= i < nx) of the vertex rows [j_begin,
+    /// j_end), all of them interior rows: y_v = sum_d B_d x_{v + d} with the
+    /// 4 x 4 blocks B_d stored column by column in b[16 d + 4 k' + k]. For
+    /// AVX2: two vertices at a time. Their x values are adjacent, so one
+    /// load of eight floats serves both, and an in-lane shuffle spreads each
+    /// of their four dofs over its half. (Without AVX2 the shuffles cost
+    /// more than they save: interior_rows_baseline.)
+    __attribute__((target("arch=x86-64-v3"))) void
+    interior_rows_avx2(const float       *x,
+                       float             *y,
+                       const unsigned int nx,
+                       const unsigned int j_begin,
+                       const unsigned int j_end,
+                       const float       *b)
+    {
+      const long row    = 4 * long(nx + 1);
+      const long off[9] = {-row - 4, -row, -row + 4, -4,          0,
+                           4,        row - 4, row,    row + 4};
+      float8     c[9][4];
+      for (unsigned int d = 0; d < 9; ++d)
+        for (unsigned int kp = 0; kp < 4; ++kp)
+          for (unsigned int k = 0; k < 8; ++k)
+            c[d][kp][k] = b[16 * d + 4 * kp + k % 4];
+      const int8 spread[4] = {{0, 0, 0, 0, 4, 4, 4, 4},
+                              {1, 1, 1, 1, 5, 5, 5, 5},
+                              {2, 2, 2, 2, 6, 6, 6, 6},
+                              {3, 3, 3, 3, 7, 7, 7, 7}};
+      for (unsigned int j = j_begin; j < j_end; ++j)
+        {
+          const long   first = 4 * long(nx + 1) * j;
+          unsigned int i     = 1;
+          for (; i + 1 < nx; i += 2)
+            {
+              const float *xv  = x + first + 4 * long(i);
+              float8       acc = {};
+              for (unsigned int d = 0; d < 9; ++d)
+                {
+                  float8 xw;
+                  std::memcpy(&xw, xv + off[d], sizeof(xw));
+                  acc += c[d][0] * __builtin_shuffle(xw, spread[0]);
+                  acc += c[d][1] * __builtin_shuffle(xw, spread[1]);
+                  acc += c[d][2] * __builtin_shuffle(xw, spread[2]);
+                  acc += c[d][3] * __builtin_shuffle(xw, spread[3]);
+                }
+              std::memcpy(y + first + 4 * long(i), &acc, sizeof(acc));
+            }
+          for (; i < nx; ++i)
+            {
+              const float *xv = x + first + 4 * long(i);
+              float        acc[4] = {};
+              for (unsigned int d = 0; d < 9; ++d)
+                for (unsigned int kp = 0; kp < 4; ++kp)
+                  for (unsigned int k = 0; k < 4; ++k)
+                    acc[k] += b[16 * d + 4 * kp + k] * xv[off[d] + kp];
+              std::memcpy(y + first + 4 * long(i), acc, sizeof(acc));
+            }
+        }
+    }
+
+    /// The same for processors without AVX2: one vertex (four lanes) at a
+    /// time.
+    void
+    interior_rows_baseline(const float       *x,
+                           float             *y,
+                           const unsigned int nx,
+                           const unsigned int j_begin,
+                           const unsigned int j_end,
+                           const float       *b)
+    {
+      typedef float float4 __attribute__((vector_size(16)));
+      const long row    = 4 * long(nx + 1);
+      const long off[9] = {-row - 4, -row, -row + 4, -4,          0,
+                           4,        row - 4, row,    row + 4};
+      float4     c[9][4];
+      for (unsigned int d = 0; d < 9; ++d)
+        for (unsigned int kp = 0; kp < 4; ++kp)
+          std::memcpy(&c[d][kp], b + 16 * d + 4 * kp, sizeof(float4));
+      for (unsigned int j = j_begin; j < j_end; ++j)
+        for (unsigned int i = 1; i < nx; ++i)
+          {
+            const long   v   = 4 * (long(nx + 1) * j + i);
+            const float *xv  = x + v;
+            float4       acc = {};
+            for (unsigned int d = 0; d < 9; ++d)
+              {
+                const float *xw = xv + off[d];
+                acc += c[d][0] * xw[0];
+                acc += c[d][1] * xw[1];
+                acc += c[d][2] * xw[2];
+                acc += c[d][3] * xw[3];
+              }
+            std::memcpy(y + v, &acc, sizeof(acc));
+          }
+    }
+
+    void
+    interior_rows(const float       *x,
+                  float             *y,
+                  const unsigned int nx,
+                  const unsigned int j_begin,
+                  const unsigned int j_end,
+                  const float       *b)
+    {
+      static const bool avx2 =
+        __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+      if (avx2)
+        interior_rows_avx2(x, y, nx, j_begin, j_end, b);
+      else
+        interior_rows_baseline(x, y, nx, j_begin, j_end, b);
+    }
+
+    /// The same in double precision, one vertex (four lanes) at a time.
+    __attribute__((target_clones("arch=x86-64-v3", "default"))) void
+    interior_rows(const double      *x,
+                  double            *y,
+                  const unsigned int nx,
+                  const unsigned int j_begin,
+                  const unsigned int j_end,
+                  const double      *b)
+    {
+      const long row    = 4 * long(nx + 1);
+      const long off[9] = {-row - 4, -row, -row + 4, -4,          0,
+                           4,        row - 4, row,    row + 4};
+      double4    c[9][4];
+      for (unsigned int d = 0; d < 9; ++d)
+        for (unsigned int kp = 0; kp < 4; ++kp)
+          std::memcpy(&c[d][kp], b + 16 * d + 4 * kp, sizeof(double4));
+      for (unsigned int j = j_begin; j < j_end; ++j)
+        for (unsigned int i = 1; i < nx; ++i)
+          {
+            const long    v   = 4 * (long(nx + 1) * j + i);
+            const double *xv  = x + v;
+            double4       acc = {};
+            for (unsigned int d = 0; d < 9; ++d)
+              {
+                const double *xw = xv + off[d];
+                acc += c[d][0] * xw[0];
+                acc += c[d][1] * xw[1];
+                acc += c[d][2] * xw[2];
+                acc += c[d][3] * xw[3];
+              }
+            std::memcpy(y + v, &acc, sizeof(acc));
+          }
+    }
+
+    /// y += K_c x on the cells [begin, end) of `cells`, all in vertex row
+    /// j, whose matrices are column-major at columns(slot of the cell). The
+    /// cell's vertices 0, 1 (and 2, 3) are adjacent in x and y: eight floats
+    /// hold both.
+    __attribute__((target_clones("arch=x86-64-v3", "default"))) void
+    contact_cells(const float        *x,
+                  float              *y,
+                  const unsigned int  nx,
+                  const unsigned int  j,
+                  const unsigned int *cells,
+                  const unsigned int  n_cells,
+                  const float *const *columns)
+    {
+      const long row = 4 * long(nx + 1);
+      for (unsigned int e = 0; e < n_cells; ++e)
+        {
+          const long   v0 = 4 * (long(cells[e] % nx) + long(nx + 1) * j);
+          const long   start[4] = {v0, v0 + 4, v0 + row, v0 + row + 4};
+          const float *cols     = columns[e];
+          float8       lower = {}, upper = {};
+          for (unsigned int w = 0; w < 4; ++w)
+            for (unsigned int kp = 0; kp < 4; ++kp)
+              {
+                const float  xm  = x[start[w] + kp];
+                const float *col = cols + 16 * (4 * w + kp);
+                float8       a, b;
+                std::memcpy(&a, col, sizeof(a));
+                std::memcpy(&b, col + 8, sizeof(b));
+                lower += a * xm;
+                upper += b * xm;
+              }
+          float8 t;
+          std::memcpy(&t, y + start[0], sizeof(t));
+          t += lower;
+          std::memcpy(y + start[0], &t, sizeof(t));
+          std::memcpy(&t, y + start[2], sizeof(t));
+          t += upper;
+          std::memcpy(y + start[2], &t, sizeof(t));
+        }
+    }
+
+    /// The same in double precision.
+    __attribute__((target_clones("arch=x86-64-v3", "default"))) void
+    contact_cells(const double        *x,
+                  double              *y,
+                  const unsigned int   nx,
+                  const unsigned int   j,
+                  const unsigned int  *cells,
+                  const unsigned int   n_cells,
+                  const double *const *columns)
+    {
+      const long row = 4 * long(nx + 1);
+      for (unsigned int e = 0; e < n_cells; ++e)
+        {
+          const long    v0 = 4 * (long(cells[e] % nx) + long(nx + 1) * j);
+          const long    start[4] = {v0, v0 + 4, v0 + row, v0 + row + 4};
+          const double *cols     = columns[e];
+          double4       acc[4]   = {};
+          for (unsigned int w = 0; w < 4; ++w)
+            for (unsigned int kp = 0; kp < 4; ++kp)
+              {
+                const double  xm  = x[start[w] + kp];
+                const double *col = cols + 16 * (4 * w + kp);
+                for (unsigned int v = 0; v < 4; ++v)
+                  {
+                    double4 a;
+                    std::memcpy(&a, col + 4 * v, sizeof(a));
+                    acc[v] += a * xm;
+                  }
+              }
+          for (unsigned int v = 0; v < 4; ++v)
+            {
+              double4 t;
+              std::memcpy(&t, y + start[v], sizeof(t));
+              t += acc[v];
+              std::memcpy(y + start[v], &t, sizeof(t));
+            }
+        }
+    }
+  } // namespace cell_operator_kernels
+
+
+
   void
   HermiteCellOperator::reinit(
     const unsigned int                     nx_,
@@ -261,6 +501,18 @@ namespace NitscheContact
   {
     return masked_double;
   }
+  template <>
+  std::vector<const float *> &
+  HermiteCellOperator::columns_of_contact_cells<float>() const
+  {
+    return cell_columns_float;
+  }
+  template <>
+  std::vector<const double *> &
+  HermiteCellOperator::columns_of_contact_cells<double>() const
+  {
+    return cell_columns_double;
+  }
 
 
 
@@ -278,17 +530,12 @@ namespace NitscheContact
       masked[i] = Number(0);
     const Number      *x      = masked.begin();
     Number            *y      = dst.begin();
-    const unsigned int row    = 4 * (nx + 1);
     const auto        &blocks = stencil<Number>();
     const auto         kind1  = [](unsigned int i, unsigned int n) {
       return i == 0 ? 0u : (i == n ? 2u : 1u);
     };
 
     // C part: the vertex stencil, row by row of vertices.
-    V interior[9][4];
-    for (unsigned int d = 0; d < 9; ++d)
-      for (unsigned int kp = 0; kp < 4; ++kp)
-        interior[d][kp] = load4<V>(&blocks[4][d][4 * kp]);
     const auto any_vertex = [&](const unsigned int i, const unsigned int j) {
       const auto &b  = blocks[kind1(i, nx) + 3 * kind1(j, ny)];
       V           yv = {};
@@ -302,9 +549,7 @@ namespace NitscheContact
           }
       store4(yv, y + 4 * (i + (nx + 1) * j));
     };
-    const int off[9] = {-int(row) - 4, -int(row), -int(row) + 4,
-                        -4,            0,         4,
-                        int(row) - 4,  int(row),  int(row) + 4};
+    const Number *interior = &blocks[4][0][0];
     parallel::apply_to_subranges(
       0u,
       ny + 1,
@@ -316,20 +561,8 @@ namespace NitscheContact
               for (unsigned int i = 1; i < nx; ++i)
                 any_vertex(i, j);
             else
-              for (unsigned int i = 1; i < nx; ++i)
-                {
-                  const Number *xv = x + 4 * (i + (nx + 1) * j);
-                  V             yv = {};
-                  for (unsigned int d = 0; d < 9; ++d)
-                    {
-                      const Number *xw = xv + off[d];
-                      yv += interior[d][0] * xw[0];
-                      yv += interior[d][1] * xw[1];
-                      yv += interior[d][2] * xw[2];
-                      yv += interior[d][3] * xw[3];
-                    }
-                  store4(yv, y + 4 * (i + (nx + 1) * j));
-                }
+              cell_operator_kernels::interior_rows(
+                x, y, nx, j, j + 1, interior);
             any_vertex(nx, j);
           }
       },
@@ -337,6 +570,10 @@ namespace NitscheContact
 
     // K_c part: every other row of cells at a time (rows of cells two apart
     // share no vertex).
+    std::vector<const Number *> &cell_columns = columns_of_contact_cells<Number>();
+    cell_columns.resize(contact_cells.size());
+    for (std::size_t e = 0; e < contact_cells.size(); ++e)
+      cell_columns[e] = columns<Number>(slots[cell_slot[contact_cells[e]]]);
     for (unsigned int parity = 0; parity < 2; ++parity)
       parallel::apply_to_subranges(
         0u,
@@ -345,29 +582,14 @@ namespace NitscheContact
           for (unsigned int r = r_begin; r < r_end; ++r)
             {
               const unsigned int j = 2 * r + parity;
-              for (unsigned int e = row_start[j]; e < row_start[j + 1]; ++e)
-                {
-                  const unsigned int c  = contact_cells[e];
-                  const unsigned int v0 = 4 * (c % nx + (nx + 1) * j);
-                  const unsigned int start[4] = {v0,
-                                                 v0 + 4,
-                                                 v0 + row,
-                                                 v0 + row + 4};
-                  const Number *cols = columns<Number>(slots[cell_slot[c]]);
-                  V             yv[4] = {};
-                  for (unsigned int w = 0; w < 4; ++w)
-                    for (unsigned int kp = 0; kp < 4; ++kp)
-                      {
-                        const Number  xm  = x[start[w] + kp];
-                        const Number *col = cols + 16 * (4 * w + kp);
-                        yv[0] += load4<V>(col) * xm;
-                        yv[1] += load4<V>(col + 4) * xm;
-                        yv[2] += load4<V>(col + 8) * xm;
-                        yv[3] += load4<V>(col + 12) * xm;
-                      }
-                  for (unsigned int v = 0; v < 4; ++v)
-                    store4(load4<V>(y + start[v]) + yv[v], y + start[v]);
-                }
+              cell_operator_kernels::contact_cells(
+                x,
+                y,
+                nx,
+                j,
+                contact_cells.data() + row_start[j],
+                row_start[j + 1] - row_start[j],
+                cell_columns.data() + row_start[j]);
             }
         },
         8);

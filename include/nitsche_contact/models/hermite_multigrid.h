@@ -166,6 +166,9 @@ namespace NitscheContact
     template <typename Number>
     dealii::Vector<Number> &
     masked_vector() const;
+    template <typename Number>
+    std::vector<const Number *> &
+    columns_of_contact_cells() const;
 
     unsigned int nx = 0, ny = 0, nq = 0;
     /// blocks[kind][d][4 k' + k]: coupling of dof k of a vertex of kind
@@ -185,6 +188,9 @@ namespace NitscheContact
     std::vector<unsigned int> contact_cells, row_start;
     mutable dealii::Vector<float>  masked_float;
     mutable dealii::Vector<double> masked_double;
+    /// per contact cell (in the order of contact_cells), its columns
+    mutable std::vector<const float *>  cell_columns_float;
+    mutable std::vector<const double *> cell_columns_double;
   };
 
 
