@@ -1,6 +1,7 @@
 // Model 2: Reissner-Mindlin plate (MITC4) with Nitsche contact and Coulomb
 // friction from the 3D formulation. See include/nitsche_contact/models/
 // mindlin.h for the overview and doc/mindlin.md for the formulation.
+#include <deal.II/base/parallel.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
@@ -702,55 +703,98 @@ namespace NitscheContact
       system_matrix.copy_from(constant_matrix);
     residual = 0.;
 
+    // Per cell: its residual (bulk, theta-terms and contact kernel), its
+    // contact energy, the status of its points and, when the matrix is
+    // assembled, its matrix. In parallel over cells (deal.II threads) when
+    // no matrix is assembled (the multigrid applies it from the cell
+    // matrices); the cell residuals are then added in cell order, so the
+    // result does not depend on the number of threads.
     std::vector<unsigned char> status(previous_status.size());
-    for (unsigned int c = 0; c < cell_grid.size(); ++c)
+    const std::size_t          n_cells = cell_grid.size();
+    cell_residuals.resize(n * n_cells);
+    cell_energies.resize(n_cells);
+    const auto cell_work = [&](const std::size_t c,
+                               std::vector<types::global_dof_index> &dofs,
+                               Vector<double>     &u,
+                               Vector<double>     &cell_residual,
+                               Vector<double>     &tmp,
+                               FullMatrix<double> *cell_matrix) {
+      const auto &cell = cell_grid[c];
+      cell->get_dof_indices(dofs);
+      for (unsigned int i = 0; i < n; ++i)
+        u(i) = solution(dofs[i]);
+      // Constant part: (bulk + theta-terms) U.
+      constant_cell_matrix.vmult(cell_residual, u);
+      bool   any_active = false;
+      double energy     = 0.;
+      for (unsigned int q = 0; q < nq; ++q)
+        {
+          const std::size_t k  = c * nq + q;
+          const PointInput  in = point_input(u, q, gaps[k]);
+          const PointState  st = evaluate_contact_point(in, scheme);
+          status[k]            = static_cast<unsigned char>(st.status);
+          if (with_energy)
+            energy += contact_energy_density(in, st) * contact_JxW[q];
+          if (st.status == PointStatus::inactive)
+            continue;
+          if (!any_active && cell_matrix)
+            *cell_matrix = 0.;
+          any_active = true;
+          // Full kernel contribution instead of the theta-terms already
+          // contained in the constant part.
+          add_point_contribution(in,
+                                 st,
+                                 contact_shapes[q],
+                                 contact_JxW[q],
+                                 cell_matrix,
+                                 cell_residual);
+          theta_matrices[q].vmult(tmp, u);
+          cell_residual -= tmp;
+          if (cell_matrix)
+            cell_matrix->add(-1., theta_matrices[q]);
+        }
+      cell_energies[c] = energy;
+      for (unsigned int i = 0; i < n; ++i)
+        cell_residuals[n * c + i] = -cell_residual(i);
+      if (cell_matrix && any_active)
+        constraints.distribute_local_to_global(*cell_matrix,
+                                               dofs,
+                                               system_matrix);
+    };
+    if (build_matrix)
+      for (std::size_t c = 0; c < n_cells; ++c)
+        cell_work(c, dofs, u, cell_residual, tmp, &cell_matrix);
+    else
+      parallel::apply_to_subranges(
+        std::size_t(0),
+        n_cells,
+        [&](const std::size_t begin, const std::size_t end) {
+          std::vector<types::global_dof_index> dofs(n);
+          Vector<double> u(n), cell_residual(n), tmp(n);
+          for (std::size_t c = begin; c < end; ++c)
+            cell_work(c, dofs, u, cell_residual, tmp, nullptr);
+        },
+        64);
+    for (std::size_t c = 0; c < n_cells; ++c)
       {
-        const auto &cell = cell_grid[c];
-        cell->get_dof_indices(dofs);
-        for (unsigned int i = 0; i < n; ++i)
-          u(i) = solution(dofs[i]);
-        // Constant part: (bulk + theta-terms) U.
-        constant_cell_matrix.vmult(cell_residual, u);
-        bool any_active = false;
-        for (unsigned int q = 0; q < nq; ++q)
-          {
-            const std::size_t k  = static_cast<std::size_t>(c) * nq + q;
-            const PointInput  in = point_input(u, q, gaps[k]);
-            const PointState  st = evaluate_contact_point(in, scheme);
-            status[k]            = static_cast<unsigned char>(st.status);
-            if (with_energy)
-              contact_energy +=
-                contact_energy_density(in, st) * contact_JxW[q];
-            ++counts.n_points;
-            if (st.status == PointStatus::inactive)
-              continue;
-            ++counts.n_active;
-            if (st.status == PointStatus::slip)
-              ++counts.n_slip;
-            else
-              ++counts.n_stick;
-            if (!any_active && build_matrix)
-              cell_matrix = 0.;
-            any_active = true;
-            // Full kernel contribution instead of the theta-terms already
-            // contained in the constant part.
-            add_point_contribution(in,
-                                   st,
-                                   contact_shapes[q],
-                                   contact_JxW[q],
-                                   build_matrix ? &cell_matrix : nullptr,
-                                   cell_residual);
-            theta_matrices[q].vmult(tmp, u);
-            cell_residual -= tmp;
-            if (build_matrix)
-              cell_matrix.add(-1., theta_matrices[q]);
-          }
-        cell_residual *= -1.;
-        constraints.distribute_local_to_global(cell_residual, dofs, residual);
-        if (build_matrix && any_active)
-          constraints.distribute_local_to_global(cell_matrix,
-                                                 dofs,
-                                                 system_matrix);
+        cell_grid[c]->get_dof_indices(dofs);
+        constraints.distribute_local_to_global(cell_residuals.begin() + n * c,
+                                               cell_residuals.begin() +
+                                                 n * (c + 1),
+                                               dofs.begin(),
+                                               residual);
+        contact_energy += cell_energies[c];
+      }
+    for (const unsigned char st : status)
+      {
+        ++counts.n_points;
+        if (st == static_cast<unsigned char>(PointStatus::inactive))
+          continue;
+        ++counts.n_active;
+        if (st == static_cast<unsigned char>(PointStatus::slip))
+          ++counts.n_slip;
+        else
+          ++counts.n_stick;
       }
     if (build_matrix)
       system_matrix.compress(VectorOperation::add);

@@ -250,6 +250,8 @@ namespace NitscheContact
     unsigned long last_changed = 0; ///< status changes of the last matrix
     dealii::Vector<double>                 load;      // condensed F
     dealii::Vector<double>                 residual;  // -R(U), condensed
+    /// per cell: -(its residual), its contact energy (assemble())
+    std::vector<double> cell_residuals, cell_energies;
     dealii::Vector<double>                 solution;  // U
     dealii::Vector<double>                 base;      // U at last solve
     dealii::Vector<double>                 increment; // dU
