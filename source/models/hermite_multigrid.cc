@@ -58,9 +58,20 @@ namespace NitscheContact
   // The two inner loops of HermiteCellOperator::vmult, for x86-64-v3 (AVX2
   // and FMA: eight float or four double lanes per instruction) and for the
   // baseline x86-64 (SSE2), chosen at run time by the processor: by GCC
-  // target_clones (the loader picks the clone; external linkage, which its
-  // dispatch needs), or for the float stencil, whose two versions differ,
-  // by a test of the processor.
+  // target_clones (the loader picks the clone), or for the float stencil,
+  // whose two versions differ, by a test of the processor. Elsewhere (not
+  // x86-64 or not GCC-compatible) only the portable loops are compiled.
+  // The x86-64-v3 versions use fused multiply-adds, so the last bits of a
+  // product (and possibly a Krylov or Newton iteration count) differ
+  // between processors with and without AVX2.
+#if defined(__GNUC__) && defined(__x86_64__)
+#  define NITSCHE_CONTACT_X86_64_V3 1
+#  define NITSCHE_CONTACT_CLONES \
+    __attribute__((target_clones("arch=x86-64-v3", "default")))
+#else
+#  define NITSCHE_CONTACT_X86_64_V3 0
+#  define NITSCHE_CONTACT_CLONES
+#endif
   namespace cell_operator_kernels
   {
     typedef float  float8 __attribute__((vector_size(32)));
@@ -74,6 +85,7 @@ namespace NitscheContact
     /// load of eight floats serves both, and an in-lane shuffle spreads each
     /// of their four dofs over its half. (Without AVX2 the shuffles cost
     /// more than they save: interior_rows_baseline.)
+#if NITSCHE_CONTACT_X86_64_V3
     __attribute__((target("arch=x86-64-v3"))) void
     interior_rows_avx2(const float       *x,
                        float             *y,
@@ -126,6 +138,8 @@ namespace NitscheContact
         }
     }
 
+#endif
+
     /// The same for processors without AVX2: one vertex (four lanes) at a
     /// time.
     void
@@ -170,16 +184,20 @@ namespace NitscheContact
                   const unsigned int j_end,
                   const float       *b)
     {
-      static const bool avx2 =
-        __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-      if (avx2)
-        interior_rows_avx2(x, y, nx, j_begin, j_end, b);
-      else
-        interior_rows_baseline(x, y, nx, j_begin, j_end, b);
+#if NITSCHE_CONTACT_X86_64_V3
+      // (the same test as the dispatch of the target_clones)
+      static const bool v3 = __builtin_cpu_supports("x86-64-v3");
+      if (v3)
+        {
+          interior_rows_avx2(x, y, nx, j_begin, j_end, b);
+          return;
+        }
+#endif
+      interior_rows_baseline(x, y, nx, j_begin, j_end, b);
     }
 
     /// The same in double precision, one vertex (four lanes) at a time.
-    __attribute__((target_clones("arch=x86-64-v3", "default"))) void
+    NITSCHE_CONTACT_CLONES void
     interior_rows(const double      *x,
                   double            *y,
                   const unsigned int nx,
@@ -216,7 +234,7 @@ namespace NitscheContact
     /// j, whose matrices are column-major at columns(slot of the cell). The
     /// cell's vertices 0, 1 (and 2, 3) are adjacent in x and y: eight floats
     /// hold both.
-    __attribute__((target_clones("arch=x86-64-v3", "default"))) void
+    NITSCHE_CONTACT_CLONES void
     contact_cells(const float        *x,
                   float              *y,
                   const unsigned int  nx,
@@ -254,7 +272,7 @@ namespace NitscheContact
     }
 
     /// The same in double precision.
-    __attribute__((target_clones("arch=x86-64-v3", "default"))) void
+    NITSCHE_CONTACT_CLONES void
     contact_cells(const double        *x,
                   double              *y,
                   const unsigned int   nx,
@@ -461,6 +479,15 @@ namespace NitscheContact
             contact_cells.push_back(i + nx * j);
       }
     row_start[ny] = contact_cells.size();
+    // (valid until the next set_cell(), which may move the slots)
+    cell_columns_float.resize(contact_cells.size());
+    cell_columns_double.resize(contact_cells.size());
+    for (std::size_t e = 0; e < contact_cells.size(); ++e)
+      {
+        const Slot &slot       = slots[cell_slot[contact_cells[e]]];
+        cell_columns_float[e]  = slot.columns_float.data();
+        cell_columns_double[e] = slot.columns_double.data();
+      }
   }
 
 
@@ -502,13 +529,13 @@ namespace NitscheContact
     return masked_double;
   }
   template <>
-  std::vector<const float *> &
+  const std::vector<const float *> &
   HermiteCellOperator::columns_of_contact_cells<float>() const
   {
     return cell_columns_float;
   }
   template <>
-  std::vector<const double *> &
+  const std::vector<const double *> &
   HermiteCellOperator::columns_of_contact_cells<double>() const
   {
     return cell_columns_double;
@@ -549,7 +576,10 @@ namespace NitscheContact
           }
       store4(yv, y + 4 * (i + (nx + 1) * j));
     };
-    const Number *interior = &blocks[4][0][0];
+    // the nine 4 x 4 blocks of an interior vertex, one after the other
+    static_assert(sizeof(blocks[4]) == 9 * 16 * sizeof(Number),
+                  "stencil blocks must be contiguous");
+    const Number *interior = blocks[4].data()->data();
     parallel::apply_to_subranges(
       0u,
       ny + 1,
@@ -560,20 +590,20 @@ namespace NitscheContact
             if (j == 0 || j == ny)
               for (unsigned int i = 1; i < nx; ++i)
                 any_vertex(i, j);
-            else
-              cell_operator_kernels::interior_rows(
-                x, y, nx, j, j + 1, interior);
             any_vertex(nx, j);
           }
+        const unsigned int first = std::max(j_begin, 1u),
+                           last  = std::min(j_end, ny);
+        if (first < last)
+          cell_operator_kernels::interior_rows(
+            x, y, nx, first, last, interior);
       },
       16);
 
     // K_c part: every other row of cells at a time (rows of cells two apart
     // share no vertex).
-    std::vector<const Number *> &cell_columns = columns_of_contact_cells<Number>();
-    cell_columns.resize(contact_cells.size());
-    for (std::size_t e = 0; e < contact_cells.size(); ++e)
-      cell_columns[e] = columns<Number>(slots[cell_slot[contact_cells[e]]]);
+    const std::vector<const Number *> &cell_columns =
+      columns_of_contact_cells<Number>();
     for (unsigned int parity = 0; parity < 2; ++parity)
       parallel::apply_to_subranges(
         0u,

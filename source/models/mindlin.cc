@@ -714,31 +714,31 @@ namespace NitscheContact
     cell_residuals.resize(n * n_cells);
     cell_energies.resize(n_cells);
     const auto cell_work = [&](const std::size_t c,
-                               std::vector<types::global_dof_index> &dofs,
-                               Vector<double>     &u,
-                               Vector<double>     &cell_residual,
-                               Vector<double>     &tmp,
-                               FullMatrix<double> *cell_matrix) {
+                               std::vector<types::global_dof_index> &c_dofs,
+                               Vector<double>     &c_u,
+                               Vector<double>     &c_residual,
+                               Vector<double>     &c_tmp,
+                               FullMatrix<double> *c_matrix) {
       const auto &cell = cell_grid[c];
-      cell->get_dof_indices(dofs);
+      cell->get_dof_indices(c_dofs);
       for (unsigned int i = 0; i < n; ++i)
-        u(i) = solution(dofs[i]);
+        c_u(i) = solution(c_dofs[i]);
       // Constant part: (bulk + theta-terms) U.
-      constant_cell_matrix.vmult(cell_residual, u);
+      constant_cell_matrix.vmult(c_residual, c_u);
       bool   any_active = false;
       double energy     = 0.;
       for (unsigned int q = 0; q < nq; ++q)
         {
           const std::size_t k  = c * nq + q;
-          const PointInput  in = point_input(u, q, gaps[k]);
+          const PointInput  in = point_input(c_u, q, gaps[k]);
           const PointState  st = evaluate_contact_point(in, scheme);
           status[k]            = static_cast<unsigned char>(st.status);
           if (with_energy)
             energy += contact_energy_density(in, st) * contact_JxW[q];
           if (st.status == PointStatus::inactive)
             continue;
-          if (!any_active && cell_matrix)
-            *cell_matrix = 0.;
+          if (!any_active && c_matrix)
+            *c_matrix = 0.;
           any_active = true;
           // Full kernel contribution instead of the theta-terms already
           // contained in the constant part.
@@ -746,19 +746,19 @@ namespace NitscheContact
                                  st,
                                  contact_shapes[q],
                                  contact_JxW[q],
-                                 cell_matrix,
-                                 cell_residual);
-          theta_matrices[q].vmult(tmp, u);
-          cell_residual -= tmp;
-          if (cell_matrix)
-            cell_matrix->add(-1., theta_matrices[q]);
+                                 c_matrix,
+                                 c_residual);
+          theta_matrices[q].vmult(c_tmp, c_u);
+          c_residual -= c_tmp;
+          if (c_matrix)
+            c_matrix->add(-1., theta_matrices[q]);
         }
       cell_energies[c] = energy;
       for (unsigned int i = 0; i < n; ++i)
-        cell_residuals[n * c + i] = -cell_residual(i);
-      if (cell_matrix && any_active)
-        constraints.distribute_local_to_global(*cell_matrix,
-                                               dofs,
+        cell_residuals[n * c + i] = -c_residual(i);
+      if (c_matrix && any_active)
+        constraints.distribute_local_to_global(*c_matrix,
+                                               c_dofs,
                                                system_matrix);
     };
     if (build_matrix)

@@ -167,7 +167,7 @@ namespace NitscheContact
     dealii::Vector<Number> &
     masked_vector() const;
     template <typename Number>
-    std::vector<const Number *> &
+    const std::vector<const Number *> &
     columns_of_contact_cells() const;
 
     unsigned int nx = 0, ny = 0, nq = 0;
@@ -188,9 +188,10 @@ namespace NitscheContact
     std::vector<unsigned int> contact_cells, row_start;
     mutable dealii::Vector<float>  masked_float;
     mutable dealii::Vector<double> masked_double;
-    /// per contact cell (in the order of contact_cells), its columns
-    mutable std::vector<const float *>  cell_columns_float;
-    mutable std::vector<const double *> cell_columns_double;
+    /// per contact cell (in the order of contact_cells), the columns of
+    /// its matrix (finish())
+    std::vector<const float *>  cell_columns_float;
+    std::vector<const double *> cell_columns_double;
   };
 
 
