@@ -140,8 +140,44 @@ namespace NitscheContact
 
 #endif
 
-    /// The same for processors without AVX2: one vertex (four lanes) at a
-    /// time.
+    /// The interior rows one vertex (four lanes of Number in a V) at a
+    /// time; inlined into the functions below, so that each clone of the
+    /// double version gets its own instructions.
+    template <typename Number, typename V>
+    inline __attribute__((always_inline)) void
+    interior_rows_by_vertex(const Number      *x,
+                            Number            *y,
+                            const unsigned int nx,
+                            const unsigned int j_begin,
+                            const unsigned int j_end,
+                            const Number      *b)
+    {
+      const long row    = 4 * long(nx + 1);
+      const long off[9] = {-row - 4, -row, -row + 4, -4,          0,
+                           4,        row - 4, row,    row + 4};
+      V          c[9][4];
+      for (unsigned int d = 0; d < 9; ++d)
+        for (unsigned int kp = 0; kp < 4; ++kp)
+          std::memcpy(&c[d][kp], b + 16 * d + 4 * kp, sizeof(V));
+      for (unsigned int j = j_begin; j < j_end; ++j)
+        for (unsigned int i = 1; i < nx; ++i)
+          {
+            const long    v   = 4 * (long(nx + 1) * j + i);
+            const Number *xv  = x + v;
+            V             acc = {};
+            for (unsigned int d = 0; d < 9; ++d)
+              {
+                const Number *xw = xv + off[d];
+                acc += c[d][0] * xw[0];
+                acc += c[d][1] * xw[1];
+                acc += c[d][2] * xw[2];
+                acc += c[d][3] * xw[3];
+              }
+            std::memcpy(y + v, &acc, sizeof(acc));
+          }
+    }
+
+    /// The float stencil for processors without AVX2.
     void
     interior_rows_baseline(const float       *x,
                            float             *y,
@@ -151,29 +187,7 @@ namespace NitscheContact
                            const float       *b)
     {
       typedef float float4 __attribute__((vector_size(16)));
-      const long row    = 4 * long(nx + 1);
-      const long off[9] = {-row - 4, -row, -row + 4, -4,          0,
-                           4,        row - 4, row,    row + 4};
-      float4     c[9][4];
-      for (unsigned int d = 0; d < 9; ++d)
-        for (unsigned int kp = 0; kp < 4; ++kp)
-          std::memcpy(&c[d][kp], b + 16 * d + 4 * kp, sizeof(float4));
-      for (unsigned int j = j_begin; j < j_end; ++j)
-        for (unsigned int i = 1; i < nx; ++i)
-          {
-            const long   v   = 4 * (long(nx + 1) * j + i);
-            const float *xv  = x + v;
-            float4       acc = {};
-            for (unsigned int d = 0; d < 9; ++d)
-              {
-                const float *xw = xv + off[d];
-                acc += c[d][0] * xw[0];
-                acc += c[d][1] * xw[1];
-                acc += c[d][2] * xw[2];
-                acc += c[d][3] * xw[3];
-              }
-            std::memcpy(y + v, &acc, sizeof(acc));
-          }
+      interior_rows_by_vertex<float, float4>(x, y, nx, j_begin, j_end, b);
     }
 
     void
@@ -205,29 +219,7 @@ namespace NitscheContact
                   const unsigned int j_end,
                   const double      *b)
     {
-      const long row    = 4 * long(nx + 1);
-      const long off[9] = {-row - 4, -row, -row + 4, -4,          0,
-                           4,        row - 4, row,    row + 4};
-      double4    c[9][4];
-      for (unsigned int d = 0; d < 9; ++d)
-        for (unsigned int kp = 0; kp < 4; ++kp)
-          std::memcpy(&c[d][kp], b + 16 * d + 4 * kp, sizeof(double4));
-      for (unsigned int j = j_begin; j < j_end; ++j)
-        for (unsigned int i = 1; i < nx; ++i)
-          {
-            const long    v   = 4 * (long(nx + 1) * j + i);
-            const double *xv  = x + v;
-            double4       acc = {};
-            for (unsigned int d = 0; d < 9; ++d)
-              {
-                const double *xw = xv + off[d];
-                acc += c[d][0] * xw[0];
-                acc += c[d][1] * xw[1];
-                acc += c[d][2] * xw[2];
-                acc += c[d][3] * xw[3];
-              }
-            std::memcpy(y + v, &acc, sizeof(acc));
-          }
+      interior_rows_by_vertex<double, double4>(x, y, nx, j_begin, j_end, b);
     }
 
     /// y += K_c x on the cells [begin, end) of `cells`, all in vertex row
