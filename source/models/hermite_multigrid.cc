@@ -223,9 +223,51 @@ namespace NitscheContact
     }
 
     /// y += K_c x on the cells [begin, end) of `cells`, all in vertex row
-    /// j, whose matrices are column-major at columns(slot of the cell). The
-    /// cell's vertices 0, 1 (and 2, 3) are adjacent in x and y: eight floats
-    /// hold both.
+    /// j, whose matrices are column-major at columns(slot of the cell). A
+    /// vector V holds the four dofs of one vertex (double) or of two
+    /// (float): the cell's vertices 0, 1 (and 2, 3) are adjacent in x and
+    /// y, so two vertices are one load or store.
+    template <typename Number, typename V>
+    inline __attribute__((always_inline)) void
+    contact_cells_by_vector(const Number        *x,
+                            Number              *y,
+                            const unsigned int   nx,
+                            const unsigned int   j,
+                            const unsigned int  *cells,
+                            const unsigned int   n_cells,
+                            const Number *const *columns)
+    {
+      constexpr unsigned int per = sizeof(V) / sizeof(Number) / 4;
+      constexpr unsigned int n_v = 4 / per;
+      const long             row = 4 * long(nx + 1);
+      for (unsigned int e = 0; e < n_cells; ++e)
+        {
+          const long    v0 = 4 * (long(cells[e] % nx) + long(nx + 1) * j);
+          const long    start[4] = {v0, v0 + 4, v0 + row, v0 + row + 4};
+          const Number *cols     = columns[e];
+          V             acc[n_v] = {};
+          for (unsigned int w = 0; w < 4; ++w)
+            for (unsigned int kp = 0; kp < 4; ++kp)
+              {
+                const Number  xm  = x[start[w] + kp];
+                const Number *col = cols + 16 * (4 * w + kp);
+                for (unsigned int a = 0; a < n_v; ++a)
+                  {
+                    V c;
+                    std::memcpy(&c, col + 4 * per * a, sizeof(c));
+                    acc[a] += c * xm;
+                  }
+              }
+          for (unsigned int a = 0; a < n_v; ++a)
+            {
+              V t;
+              std::memcpy(&t, y + start[per * a], sizeof(t));
+              t += acc[a];
+              std::memcpy(y + start[per * a], &t, sizeof(t));
+            }
+        }
+    }
+
     NITSCHE_CONTACT_CLONES void
     contact_cells(const float        *x,
                   float              *y,
@@ -235,35 +277,10 @@ namespace NitscheContact
                   const unsigned int  n_cells,
                   const float *const *columns)
     {
-      const long row = 4 * long(nx + 1);
-      for (unsigned int e = 0; e < n_cells; ++e)
-        {
-          const long   v0 = 4 * (long(cells[e] % nx) + long(nx + 1) * j);
-          const long   start[4] = {v0, v0 + 4, v0 + row, v0 + row + 4};
-          const float *cols     = columns[e];
-          float8       lower = {}, upper = {};
-          for (unsigned int w = 0; w < 4; ++w)
-            for (unsigned int kp = 0; kp < 4; ++kp)
-              {
-                const float  xm  = x[start[w] + kp];
-                const float *col = cols + 16 * (4 * w + kp);
-                float8       a, b;
-                std::memcpy(&a, col, sizeof(a));
-                std::memcpy(&b, col + 8, sizeof(b));
-                lower += a * xm;
-                upper += b * xm;
-              }
-          float8 t;
-          std::memcpy(&t, y + start[0], sizeof(t));
-          t += lower;
-          std::memcpy(y + start[0], &t, sizeof(t));
-          std::memcpy(&t, y + start[2], sizeof(t));
-          t += upper;
-          std::memcpy(y + start[2], &t, sizeof(t));
-        }
+      contact_cells_by_vector<float, float8>(x, y, nx, j, cells, n_cells,
+                                             columns);
     }
 
-    /// The same in double precision.
     NITSCHE_CONTACT_CLONES void
     contact_cells(const double        *x,
                   double              *y,
@@ -273,33 +290,8 @@ namespace NitscheContact
                   const unsigned int   n_cells,
                   const double *const *columns)
     {
-      const long row = 4 * long(nx + 1);
-      for (unsigned int e = 0; e < n_cells; ++e)
-        {
-          const long    v0 = 4 * (long(cells[e] % nx) + long(nx + 1) * j);
-          const long    start[4] = {v0, v0 + 4, v0 + row, v0 + row + 4};
-          const double *cols     = columns[e];
-          double4       acc[4]   = {};
-          for (unsigned int w = 0; w < 4; ++w)
-            for (unsigned int kp = 0; kp < 4; ++kp)
-              {
-                const double  xm  = x[start[w] + kp];
-                const double *col = cols + 16 * (4 * w + kp);
-                for (unsigned int v = 0; v < 4; ++v)
-                  {
-                    double4 a;
-                    std::memcpy(&a, col + 4 * v, sizeof(a));
-                    acc[v] += a * xm;
-                  }
-              }
-          for (unsigned int v = 0; v < 4; ++v)
-            {
-              double4 t;
-              std::memcpy(&t, y + start[v], sizeof(t));
-              t += acc[v];
-              std::memcpy(y + start[v], &t, sizeof(t));
-            }
-        }
+      contact_cells_by_vector<double, double4>(x, y, nx, j, cells, n_cells,
+                                               columns);
     }
   } // namespace cell_operator_kernels
 
