@@ -334,6 +334,14 @@ namespace NitscheContact
         "(continuation). Thin plates pressed far onto an obstacle need a "
         "few; later cycles start from the previous cycle's solution at "
         "full load (nested iteration).");
+      prm.declare_entry(
+        "Nonmonotone window", "5", Patterns::Integer(0, 1000),
+        "With the exact line search on the energy J (theta = 1, no "
+        "friction): a full Newton step is also accepted when J there does "
+        "not exceed the largest J of the last N accepted iterates (non-"
+        "monotone rule of Grippo, Lampariello and Lucidi); otherwise the "
+        "exact line search runs. 0: monotone (full step only when the "
+        "slope of J there is small). See doc/driver.md.");
       prm.declare_entry("Damping after", "100000", Patterns::Integer(0, 100000),
                         "With 'Line search', damped steps are also used "
                         "from this iteration on (0: always damped).");
@@ -518,6 +526,7 @@ namespace NitscheContact
       print_iterations      = prm.get_bool("Print iterations");
       load_steps            = prm.get_integer("Load steps");
       damping_after         = prm.get_integer("Damping after");
+      nonmonotone_window    = prm.get_integer("Nonmonotone window");
       reuse_factorization   = prm.get_bool("Reuse factorization");
     }
     prm.leave_subsection();

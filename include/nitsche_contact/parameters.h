@@ -113,6 +113,7 @@ namespace NitscheContact
     bool            print_iterations       = true;
     unsigned int    load_steps             = 1;
     unsigned int    damping_after          = 100000;
+    unsigned int    nonmonotone_window     = 5;
     bool            reuse_factorization    = true;
 
     // "Output"
