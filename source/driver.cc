@@ -88,7 +88,6 @@ namespace NitscheContact
                                  PhaseTimes        &t,
                                  bool              &converged)
   {
-    (void)cycle;
     Timer                      timer;
     std::vector<std::uint64_t> history;
     bool         damping = prm.line_search && prm.damping_after == 0;
@@ -108,7 +107,10 @@ namespace NitscheContact
           break;
         // J at the starting iterate (NaN without an energy): energy() uses
         // the contact part of the assemble() just done at U_k.
-        if (energies.empty() && prm.nonmonotone_window > 0 && prm.line_search)
+        // Only on nested cycles: from a cold start (cycle 0) the rule gave
+        // as many or more iterations (doc/design.md).
+        if (energies.empty() && prm.nonmonotone_window > 0 &&
+            prm.line_search && cycle > 0)
           {
             timer.restart();
             const double j0 = model.energy();

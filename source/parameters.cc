@@ -337,11 +337,12 @@ namespace NitscheContact
       prm.declare_entry(
         "Nonmonotone window", "5", Patterns::Integer(0, 1000),
         "With the exact line search on the energy J (theta = 1, no "
-        "friction): a full Newton step is also accepted when J there does "
-        "not exceed the largest J of the last N accepted iterates (non-"
-        "monotone rule of Grippo, Lampariello and Lucidi); otherwise the "
-        "exact line search runs. 0: monotone (full step only when the "
-        "slope of J there is small). See doc/driver.md.");
+        "friction), on the cycles after the first (nested iteration): a "
+        "full Newton step is also accepted when J there does not exceed the "
+        "largest J of the last N iterates (non-monotone rule of Grippo, "
+        "Lampariello and Lucidi); otherwise the exact line search runs. "
+        "0: monotone (the full step only when the slope of J there is "
+        "small). See doc/design.md.");
       prm.declare_entry("Damping after", "100000", Patterns::Integer(0, 100000),
                         "With 'Line search', damped steps are also used "
                         "from this iteration on (0: always damped).");
