@@ -93,9 +93,16 @@ namespace NitscheContact
     bool         damping = prm.line_search && prm.damping_after == 0;
     unsigned int solves  = 0;
     converged            = false;
-    // Energies (or upper bounds of them) of the iterates accepted so far,
-    // for the non-monotone acceptance of full Newton steps below.
+    // Upper bounds of J at the iterates of this solve, one per iterate,
+    // for the non-monotone acceptance of full Newton steps below. Only on
+    // nested cycles: from a cold start (cycle 0) the rule gave as many or
+    // more iterations (doc/design.md).
+    const bool nonmonotone =
+      prm.nonmonotone_window > 0 && prm.line_search && cycle > 0;
     std::vector<double> energies;
+    // bound of J at the next iterate from the step that leads there (NaN:
+    // none, measure J there)
+    double next_bound = std::numeric_limits<double>::quiet_NaN();
 
     for (;;)
       {
@@ -105,18 +112,24 @@ namespace NitscheContact
         records.back().counts = c;
         if (solves >= prm.max_iterations)
           break;
-        // J at the starting iterate (NaN without an energy): energy() uses
-        // the contact part of the assemble() just done at U_k.
-        // Only on nested cycles: from a cold start (cycle 0) the rule gave
-        // as many or more iterations (doc/design.md).
-        if (energies.empty() && prm.nonmonotone_window > 0 &&
-            prm.line_search && cycle > 0)
+        // The bound of J(U_k) left by the last step, or J(U_k) itself
+        // (NaN without an energy): energy() uses the contact part of the
+        // assemble() just done at U_k.
+        if (nonmonotone)
           {
-            timer.restart();
-            const double j0 = model.energy();
-            t.assembly += timer.wall_time();
-            if (std::isfinite(j0))
-              energies.push_back(j0);
+            if (std::isfinite(next_bound))
+              energies.push_back(next_bound);
+            else
+              {
+                timer.restart();
+                const double j = model.energy();
+                t.assembly += timer.wall_time();
+                if (std::isfinite(j))
+                  energies.push_back(j);
+                else
+                  energies.clear();
+              }
+            next_bound = std::numeric_limits<double>::quiet_NaN();
           }
 
         // A contact status seen two or more iterations ago coming back
@@ -174,19 +187,23 @@ namespace NitscheContact
             t.assembly += timer.wall_time();
             // The full step is accepted when the slope there is already
             // small (always the case once the contact status has settled:
-            // J is then quadratic along dU and phi'(1) = 0 up to round-off;
-            // J(U_k + dU) <= J(U_k) + max(s1, 0) by convexity) ...
+            // J is then quadratic along dU and phi'(1) = 0 up to round-off)
+            // ...
             bool take_full = !(s1 > 0.1 * std::abs(slope0));
-            double j_next = energies.empty() ?
-                              0. :
-                              energies.back() + std::max(s1, 0.);
+            // (phi convex: phi(t) <= phi(0) + t phi'(t))
+            const double j_base =
+              energies.empty() ? std::numeric_limits<double>::quiet_NaN() :
+                                 energies.back();
+            next_bound = j_base + s1;
             // ... or, non-monotone (Grippo, Lampariello, Lucidi 1986), when
             // J there is below the largest J of the last 'Nonmonotone
             // window' iterates by 1e-4 |slope0|. Measured: on nested cycles the
             // full steps settle the contact status in fewer iterations than
             // the exact line search, which crawls (steps 0.01-0.3) through
             // the band where the status of the coarse solution is wrong.
-            if (!take_full && !energies.empty())
+            // Off once the status cycles: full steps A -> B -> A could
+            // otherwise pass this test for ever.
+            if (!take_full && !energies.empty() && !damping)
               {
                 timer.restart();
                 const double j_full = model.energy();
@@ -201,13 +218,10 @@ namespace NitscheContact
                               1e-4 * slope0;
                 if (take_full)
                   {
-                    j_next           = j_full;
+                    next_bound       = j_full;
                     nonmonotone_step = true;
                   }
               }
-            if (!energies.empty())
-              // after a line search J(U_k+1) <= J(U_k): keep the bound
-              energies.push_back(take_full ? j_next : energies.back());
             if (!take_full)
               {
                 // phi' without assembling, where the model offers it
@@ -235,6 +249,7 @@ namespace NitscheContact
                         fs = model.energy_slope();
                       }
                     t.assembly += timer.wall_time();
+                    next_bound = j_base + step * fs;
                     if (std::abs(fs) <= 0.1 * std::abs(slope0) ||
                         b - a <= 1e-10)
                       break;

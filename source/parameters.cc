@@ -318,9 +318,11 @@ namespace NitscheContact
       prm.declare_entry(
         "Line search", "true", Patterns::Bool(),
         "Globalisation of the Newton steps. When the formulation has an "
-        "energy (theta = 1 and no friction): exact line search on it in "
-        "every iteration (the full step is taken whenever the slope there "
-        "is small, always the case once the contact status has settled). "
+        "energy (theta = 1 and no friction; the Kirchhoff pure penalty for "
+        "every theta): exact line search on it, unless the slope at the "
+        "full step is small (always the case once the contact status has "
+        "settled) or the full step passes the test of 'Nonmonotone "
+        "window'. "
         "Otherwise: full steps until the contact status cycles (a status "
         "seen before reappears) or 'Damping after' iterations, then "
         "backtracking on the residual norm. false: always full steps.");
@@ -336,13 +338,14 @@ namespace NitscheContact
         "full load (nested iteration).");
       prm.declare_entry(
         "Nonmonotone window", "5", Patterns::Integer(0, 1000),
-        "With the exact line search on the energy J (theta = 1, no "
-        "friction), on the cycles after the first (nested iteration): a "
-        "full Newton step is also accepted when J there does not exceed the "
-        "largest J of the last N iterates (non-monotone rule of Grippo, "
-        "Lampariello and Lucidi); otherwise the exact line search runs. "
-        "0: monotone (the full step only when the slope of J there is "
-        "small). See doc/design.md.");
+        "With the exact line search on the energy J (see 'Line search'), on "
+        "the cycles after the first (nested iteration) and until the "
+        "contact status cycles: a full Newton step is also accepted when J "
+        "there is below the largest J of the last N iterates by 1e-4 times "
+        "the initial slope (non-monotone rule of Grippo, Lampariello and "
+        "Lucidi); otherwise the exact line search runs. 0: monotone (the "
+        "full step only when the slope of J there is small). See "
+        "doc/design.md.");
       prm.declare_entry("Damping after", "100000", Patterns::Integer(0, 100000),
                         "With 'Line search', damped steps are also used "
                         "from this iteration on (0: always damped).");

@@ -2,14 +2,15 @@
 solver/Nonmonotone window', doc/design.md) against the monotone driver
 (window 0), the independent second method: the same discrete problem must
 come out whichever path the Newton iteration takes.
- - Mindlin plate, the paper's test from 10^2 cells over five nested cycles
-   (to 160^2), vertex contact points, multigrid solver: the case of
+ - Mindlin plate, the paper's test from 10^2 cells over five cycles (to
+   160^2, four of them nested), vertex contact points, multigrid solver: the case of
    doc/benchmarks.md (session 9) where the exact line search crawls on the
    80^2 and 160^2 cycles (43 and 52 iterations) and the window rule does not;
  - 3D elasticity, the paper's test (Q2, 8 x 8 x 1 then 16 x 16 x 1), Gauss-
    Lobatto contact points.
 Checks per cycle: both runs converge; contact force and probe deflections
-agree to 1e-6 (relative) and the active sets to 0.5 % of the active points
+agree to 1e-6 (relative; 1e-5 for the 3D runs, whose Newton tolerance is
+1e-6, as in elasticity_mpi) and the active sets to 0.5 % of the active points
 (points at s_n = 0 within round-off may end on either side); the cold start
 (cycle 0) is untouched by the rule (same iteration count, and no full step
 is reported as accepted by it), the nested cycles do use it. On the Mindlin
@@ -41,8 +42,8 @@ elasticity_changes = [("Number of cycles", "2"), ("Subdivisions", "8, 8, 1"),
                       ("Tolerance", "1e-6"),
                       ("Refine through thickness", "false\n  set Contact quadrature rule = lobatto")]
 
-cases = [("mindlin", "paper_mindlin.prm", mindlin_changes, True),
-         ("elasticity", "paper_3d.prm", elasticity_changes, False)]
+cases = [("mindlin", "paper_mindlin.prm", mindlin_changes, True, 1e-6),
+         ("elasticity", "paper_3d.prm", elasticity_changes, False, 1e-5)]
 
 
 def cycle_logs(out):
@@ -50,7 +51,7 @@ def cycle_logs(out):
     return re.split(r"(?m)^Cycle \d+:", out)[1:]
 
 
-for tag, prm, changes, must_save in cases:
+for tag, prm, changes, must_save, rtol in cases:
     ref, out_ref = run(args, tag + "_monotone", prm_from(prm, changes, 0))
     new, out_new = run(args, tag + "_window5", prm_from(prm, changes, 5))
     check("non-monotone" not in out_ref, tag + ": window 0 never accepts by the window rule")
@@ -62,9 +63,9 @@ for tag, prm, changes, must_save in cases:
         na, nb = cr["active_points"], cn["active_points"]
         check(na > 0 and abs(na - nb) <= 0.005 * na,
               what + ": active points %d (window 0), %d (window 5)" % (na, nb))
-        close(cn["contact_force"], cr["contact_force"], 1e-6, what + ": contact force")
+        close(cn["contact_force"], cr["contact_force"], rtol, what + ": contact force")
         for k, (wr, wn) in enumerate(zip(cr["probes"], cn["probes"])):
-            close(wn, wr, 1e-6, what + ": probe %d" % k)
+            close(wn, wr, rtol, what + ": probe %d" % k)
         used = logs[cycle].count("full step (non-monotone)")
         if cycle == 0:
             check(cr["nonlinear_iterations"] == cn["nonlinear_iterations"] and used == 0,
