@@ -9,8 +9,10 @@
 # wall-clock seconds per phase (from summary.json, 'Print timings = true').
 # The sixth argument selects the 3x3 contact points per face: 'gauss'
 # (default, as paper_3d.prm) or 'lobatto' (the Q2 face nodes; fewer Newton
-# iterations, doc/benchmarks.md). Usage:
-#   benchmarks/elasticity.sh [path/to/nitsche-contact] [cycles] [direct|amg] [ranks] [plane|all] [gauss|lobatto]
+# iterations, doc/benchmarks.md). The seventh sets gamma0 (default 20, as
+# paper_3d.prm; with the Lobatto points theta = 1 needs gamma0 >= 60 on
+# these flat cells, doc/benchmarks.md). Usage:
+#   benchmarks/elasticity.sh [path/to/nitsche-contact] [cycles] [direct|amg] [ranks] [plane|all] [gauss|lobatto] [gamma0]
 # The program must be built with CMAKE_BUILD_TYPE=Release. Nonlinear
 # tolerance 1e-6 (the round-off floor of this thin plate is ~1e-7).
 set -e
@@ -29,11 +31,16 @@ case "$rule" in
   gauss|lobatto) ;;
   *) echo "benchmarks/elasticity.sh: contact rule must be 'gauss' or 'lobatto', not '$rule'" >&2; exit 1 ;;
 esac
+gamma0=${7:-20}
+case "$gamma0" in
+  ''|*[!0-9.e+-]*) echo "benchmarks/elasticity.sh: gamma0 must be a positive number, not '$gamma0'" >&2; exit 1 ;;
+esac
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 sed -e "s/^\( *set Number of cycles *=\).*/\1 $cycles/" \
     -e "s/^\( *set Subdivisions *=\).*/\1 8, 8, 1/" \
     -e "s/^\( *set Tolerance *=\).*/\1 1e-6/" \
+    -e "s/^\( *set Nitsche gamma0 *=\).*/\1 $gamma0/" \
     -e "s/^\( *set Maximum iterations *=\).*/\1 300/" \
     -e "s|^\( *set Directory *=\).*|\1 $work/out|" \
     -e "s/^\( *set Format *=\).*/\1 none/" \

@@ -7,6 +7,8 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/sparsity_tools.h>
@@ -719,6 +721,106 @@ namespace NitscheContact
       }
     ghosted = solution;
     assemble_bulk();
+
+    trace_constant_value = trace_constant();
+    const double bound =
+      (1. + prm.theta) * (1. + prm.theta) / 4. * trace_constant_value;
+    if (prm.gamma0 <= bound && Utilities::MPI::this_mpi_process(comm) == 0)
+      std::cout << "  warning: 'Contact/Nitsche gamma0' = " << prm.gamma0
+                << " is not above the coercivity bound (1+theta)^2/4 C_n = "
+                << bound << " of this mesh and contact quadrature (C_n = "
+                << trace_constant_value
+                << " on the first contact cell): the Newton matrix may be "
+                   "indefinite and the energy not convex; raise gamma0 or "
+                   "use theta = -1"
+                << std::endl;
+  }
+
+  double
+  ElasticityModel::trace_constant() const
+  {
+    const unsigned int n = fe.n_dofs_per_cell();
+    const double       lambda = prm.lambda(), mu = prm.mu();
+    double             c_n    = 0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (c_n == 0. && cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == contact_id)
+            {
+              // a_K(phi_i, phi_j) and h_n (sigma_n(phi_i), sigma_n(phi_j))_F
+              FullMatrix<double> a(n, n), s(n, n);
+              const QGauss<3>    quadrature(degree + 1);
+              FEValues<3>        fv(mapping, fe, quadrature,
+                             update_gradients | update_JxW_values);
+              FEFaceValues<3> fvf(mapping, fe, contact_face_quadrature,
+                                  update_gradients | update_normal_vectors |
+                                    update_JxW_values);
+              fv.reinit(cell);
+              fvf.reinit(cell, f);
+              for (unsigned int q = 0; q < quadrature.size(); ++q)
+                for (unsigned int i = 0; i < n; ++i)
+                  for (unsigned int j = 0; j < n; ++j)
+                    {
+                      const unsigned int ci =
+                                           fe.system_to_component_index(i).first,
+                                         cj =
+                                           fe.system_to_component_index(j).first;
+                      const Tensor<1, 3> gi = fv.shape_grad(i, q),
+                                         gj = fv.shape_grad(j, q);
+                      a(i, j) += (lambda * gi[ci] * gj[cj] +
+                                  mu * gi[cj] * gj[ci] +
+                                  (ci == cj ? mu * (gi * gj) : 0.)) *
+                                 fv.JxW(q);
+                    }
+              const double h_n = cell->measure() / cell->face(f)->measure();
+              std::vector<double> sn(n);
+              for (unsigned int q = 0; q < contact_face_quadrature.size(); ++q)
+                {
+                  const Tensor<1, 3> nrm = fvf.normal_vector(q);
+                  for (unsigned int i = 0; i < n; ++i)
+                    {
+                      const unsigned int c = fe.system_to_component_index(i).first;
+                      const Tensor<1, 3> g = fvf.shape_grad(i, q);
+                      // n.sigma(N e_c)n
+                      sn[i] = lambda * g[c] + 2. * mu * (g * nrm) * nrm[c];
+                    }
+                  for (unsigned int i = 0; i < n; ++i)
+                    for (unsigned int j = 0; j < n; ++j)
+                      s(i, j) += h_n * sn[i] * sn[j] * fvf.JxW(q);
+                }
+              // max of s(v,v) / (E a(v,v)) on the complement of the rigid
+              // motions (the kernel of a, where s vanishes too)
+              LAPACKFullMatrix<double> la(n, n);
+              la = a;
+              Vector<double>     eval;
+              FullMatrix<double> evec;
+              la.compute_eigenvalues_symmetric(
+                -std::numeric_limits<double>::max(),
+                std::numeric_limits<double>::max(), 0., eval, evec);
+              const double       largest = eval.linfty_norm();
+              std::vector<unsigned int> kept;
+              for (unsigned int k = 0; k < eval.size(); ++k)
+                if (eval[k] > 1e-10 * largest)
+                  kept.push_back(k);
+              const unsigned int m = kept.size();
+              FullMatrix<double> w(n, m), sw(n, m), b(m, m);
+              for (unsigned int k = 0; k < m; ++k)
+                for (unsigned int i = 0; i < n; ++i)
+                  w(i, k) = evec(i, kept[k]) / std::sqrt(eval[kept[k]]);
+              s.mmult(sw, w);
+              w.Tmmult(b, sw);
+              LAPACKFullMatrix<double> lb(m, m);
+              lb = b;
+              Vector<double>     eb;
+              FullMatrix<double> vb;
+              lb.compute_eigenvalues_symmetric(
+                -std::numeric_limits<double>::max(),
+                std::numeric_limits<double>::max(), 0., eb, vb);
+              for (unsigned int k = 0; k < eb.size(); ++k)
+                c_n = std::max(c_n, eb[k] / prm.youngs_modulus);
+            }
+    return Utilities::MPI::max(c_n, comm);
   }
 
   std::uint64_t
@@ -1152,6 +1254,7 @@ namespace NitscheContact
       {"tangential_force_y",
        -Utilities::MPI::sum(tangential_force[1], comm)},
       {"max_friction_ratio", Utilities::MPI::max(max_ratio, comm)},
+      {"nitsche_trace_constant", trace_constant_value},
       {"relative_residual", relative_residual}};
 
     if (exact_solution)

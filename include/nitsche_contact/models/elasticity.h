@@ -98,6 +98,13 @@ namespace NitscheContact
     double
     nitsche_r(const dealii::DoFHandler<3>::active_cell_iterator &cell,
               unsigned int                                      face) const;
+    /// The constant C_n of the discrete trace-inverse inequality
+    /// h_n ||sigma_n(v)||^2_F <= C_n E a_K(v,v) (theory.md 2.4) on the first
+    /// contact cell, with the contact quadrature (largest over MPI ranks):
+    /// theta is coercive for gamma0 > (1+theta)^2/4 C_n.
+    double
+    trace_constant() const;
+    double trace_constant_value = 0.;
 
     const CommonParameters &prm;
     MPI_Comm                comm;

@@ -1,0 +1,56 @@
+"""The constant C_n of the discrete trace-inverse inequality
+h_n ||sigma_n(v)||^2_F <= C_n E a_K(v, v) that the 3D model computes on the
+first contact cell (summary.json extra 'nitsche_trace_constant'; theta is
+coercive for gamma0 > (1+theta)^2/4 C_n, theory.md 2.4), against the values
+tabulated in theory.md 2.4 (an independent computation: largest local
+generalized eigenvalue, nu = 0.3, exact face quadrature): Q1 hexahedron
+2.21 (cube) and 1.40 (flat cell, h_z/h_xy = 0.1), Q2 hexahedron 6.73 and
+5.46. Then the paper's 3D cell (0.3125 x 0.3125 x 0.01, Q2): with 3x3 Gauss
+contact points C_n stays below gamma0 = 20 (no warning), with the 3x3
+Gauss-Lobatto points (the Q2 face nodes) it exceeds 20 and the program must
+warn; its Newton matrix then has negative eigenvalues (237 on 32x32x1,
+counted by an LDL^T factorisation, doc/benchmarks.md), while gamma0 = 60
+gives none."""
+import os, re, sys
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from common import parse_args, run, close, check, finish
+
+args = parse_args()
+here = os.path.dirname(os.path.abspath(__file__))
+paper = open(os.path.join(here, "..", "..", "parameters", "paper_3d.prm")).read()
+
+
+def prm(degree, side, thickness, points, rule, gamma0=20):
+    text = paper
+    for entry, value in [("Number of cycles", "1"), ("Subdivisions", "1, 1, 1"),
+                         ("Length x", str(side)), ("Length y", str(side)),
+                         ("Thickness", str(thickness)), ("Polynomial degree", str(degree)),
+                         ("Nitsche gamma0", str(gamma0)),
+                         ("Contact quadrature points",
+                          "%d\n  set Contact quadrature rule = %s" % (points, rule))]:
+        text, n = re.subn(r"(?m)^(\s*set %s\s*=).*$" % re.escape(entry),
+                          lambda m: m.group(1) + " " + value, text)
+        check(n == 1, "paper_3d.prm: one entry '%s'" % entry)
+    return text
+
+
+def constant(summary):
+    return dict(summary["cycles"][-1]["extra"])["nitsche_trace_constant"]
+
+
+for tag, degree, side, thickness, ref in [("q1_cube", 1, 1, 1, 2.21), ("q1_flat", 1, 1, 0.1, 1.40),
+                                          ("q2_cube", 2, 1, 1, 6.73), ("q2_flat", 2, 1, 0.1, 5.46)]:
+    s, out = run(args, tag, prm(degree, side, thickness, 5, "gauss"))
+    close(constant(s), ref, 0.005, tag + ": C_n against theory.md 2.4")
+    check("warning" not in out, tag + ": gamma0 = 20 above C_n, no warning")
+
+s, out = run(args, "paper_gauss", prm(2, 0.3125, 0.01, 3, "gauss"))
+c = constant(s)
+check(1. < c < 20. and "warning" not in out, "paper cell, 3x3 Gauss: C_n = %.3f < 20, no warning" % c)
+s, out = run(args, "paper_lobatto", prm(2, 0.3125, 0.01, 3, "lobatto"))
+c = constant(s)
+check(20. < c < 60. and "warning" in out and "Nitsche gamma0" in out,
+      "paper cell, 3x3 Gauss-Lobatto: C_n = %.3f in (20, 60), warned" % c)
+s, out = run(args, "paper_lobatto_60", prm(2, 0.3125, 0.01, 3, "lobatto", 60))
+check("warning" not in out, "paper cell, 3x3 Gauss-Lobatto, gamma0 = 60: no warning")
+finish()
