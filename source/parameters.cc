@@ -83,8 +83,11 @@ namespace NitscheContact
     "points per direction they are the vertices only). Measured on the "
     "paper test: the Mindlin model with 2-point 'lobatto' needs about half "
     "the Newton iterations of 4-point 'gauss' for the same deflections; the "
-    "3D model gains nothing consistent (doc/mindlin.md 4.1). 'lobatto' needs "
-    "2 or more points per direction.";
+    "3D model, on the paper's thin plate with in-plane refinement, about "
+    "half as well, but there 3x3 'lobatto' raises the trace constant C_n "
+    "from 5.4 to 33.6, so theta = 1 needs gamma0 above 33.6 (the program "
+    "warns; doc/benchmarks.md). 'lobatto' needs 2 or more points per "
+    "direction.";
 
   Quadrature<2>
   contact_rule(const std::string &rule,
@@ -290,8 +293,11 @@ namespace NitscheContact
       prm.declare_entry(
         "Nitsche gamma0", "20", Patterns::Double(),
         "Dimensionless Nitsche parameter gamma0 > 0; r = gamma0 E / h_n. "
-        "theta = 1 needs gamma0 above the trace constant (about 2 for Q1, 7 "
-        "for Q2 cubes), theta = -1 works for any gamma0 > 0.");
+        "theta = 1 needs gamma0 above the trace constant C_n (about 2 for Q1, "
+        "7 for Q2 cubes with Gauss contact points; 3D model: computed on the "
+        "first contact cell, reported as nitsche_trace_constant, and a "
+        "warning when gamma0 <= (1+theta)^2/4 C_n), theta = -1 works for any "
+        "gamma0 > 0.");
       prm.declare_entry("Friction coefficient", "0", Patterns::Double(),
                         "Coulomb coefficient F >= 0 (0: frictionless).");
     }

@@ -730,7 +730,8 @@ namespace NitscheContact
                 << " is not above the coercivity bound (1+theta)^2/4 C_n = "
                 << bound << " of this mesh and contact quadrature (C_n = "
                 << trace_constant_value
-                << " on the first contact cell): the Newton matrix may be "
+                << " on the first contact cell, normal part; friction adds "
+                   "the tangential one): the Newton matrix may be "
                    "indefinite and the energy not convex; raise gamma0 or "
                    "use theta = -1"
                 << std::endl;

@@ -7,8 +7,9 @@ come out whichever path the Newton iteration takes.
    doc/benchmarks.md (session 9) where the exact line search crawls on the
    80^2 and 160^2 cycles (43 and 52 iterations) and the window rule does not;
  - 3D elasticity, the paper's test (Q2, 8 x 8 x 1 then 16 x 16 x 1), Gauss-
-   Lobatto contact points with gamma0 = 60 (above their trace constant
-   C_n = 33.6 on these cells, so that J is convex; nitsche_trace_constant).
+   Lobatto contact points with gamma0 = 60 (above their trace constant,
+   33.6 on the thin 32^2 x 1 cells and close to it on these, so that J is
+   convex; nitsche_trace_constant).
 Checks per cycle: both runs converge; contact force and probe deflections
 agree to 1e-6 (relative; 1e-5 for the 3D runs, whose Newton tolerance is
 1e-6, as in elasticity_mpi) and the active sets to 0.5 % of the active points
