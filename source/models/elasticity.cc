@@ -792,13 +792,18 @@ namespace NitscheContact
                 }
               // max of s(v,v) / (E a(v,v)) on the complement of the rigid
               // motions (the kernel of a, where s vanishes too)
-              LAPACKFullMatrix<double> la(n, n);
-              la = a;
+              const auto eigen = [](const FullMatrix<double> &mat,
+                                    Vector<double>           &values,
+                                    FullMatrix<double>       &vectors) {
+                LAPACKFullMatrix<double> l(mat.m(), mat.n());
+                l = mat;
+                l.compute_eigenvalues_symmetric(
+                  -std::numeric_limits<double>::max(),
+                  std::numeric_limits<double>::max(), 0., values, vectors);
+              };
               Vector<double>     eval;
               FullMatrix<double> evec;
-              la.compute_eigenvalues_symmetric(
-                -std::numeric_limits<double>::max(),
-                std::numeric_limits<double>::max(), 0., eval, evec);
+              eigen(a, eval, evec);
               const double       largest = eval.linfty_norm();
               std::vector<unsigned int> kept;
               for (unsigned int k = 0; k < eval.size(); ++k)
@@ -811,13 +816,9 @@ namespace NitscheContact
                   w(i, k) = evec(i, kept[k]) / std::sqrt(eval[kept[k]]);
               s.mmult(sw, w);
               w.Tmmult(b, sw);
-              LAPACKFullMatrix<double> lb(m, m);
-              lb = b;
               Vector<double>     eb;
               FullMatrix<double> vb;
-              lb.compute_eigenvalues_symmetric(
-                -std::numeric_limits<double>::max(),
-                std::numeric_limits<double>::max(), 0., eb, vb);
+              eigen(b, eb, vb);
               for (unsigned int k = 0; k < eb.size(); ++k)
                 c_n = std::max(c_n, eb[k] / prm.youngs_modulus);
             }
