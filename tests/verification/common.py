@@ -61,6 +61,21 @@ def close(value, reference, rel_tol, what):
           % (what, value, reference, err, rel_tol))
 
 
+def compare_cycle(what, ref, new, rtol, names):
+    """Two converged runs of the same problem by two methods (names = their
+    labels): both converged, active points within 0.5 % of each other
+    (points at s_n = 0 within round-off may end on either side), contact
+    force and probe deflections within rtol (relative)."""
+    check(ref["converged"] and new["converged"], what + ": both converged")
+    na, nb = ref["active_points"], new["active_points"]
+    check(na > 0 and abs(na - nb) <= 0.005 * na,
+          what + ": active points %d (%s), %d (%s)" % (na, names[0], nb, names[1]))
+    close(new["contact_force"], ref["contact_force"], rtol,
+          what + ": contact force %s vs %s" % (names[1], names[0]))
+    for k, (wr, wn) in enumerate(zip(ref["probes"], new["probes"])):
+        close(wn, wr, rtol, what + ": probe %d %s vs %s" % (k, names[1], names[0]))
+
+
 def finish():
     if failures:
         print("%d check(s) failed" % len(failures))
