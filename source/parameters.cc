@@ -368,6 +368,16 @@ namespace NitscheContact
         "precondition GMRES (reduction 1e-12, at most 10 iterations, else a "
         "new factorisation). false: factorise every Newton matrix. No effect "
         "on the multigrid (Kirchhoff) and AMG (3D) solvers.");
+      prm.declare_entry(
+        "Symmetric factorization", "true", Patterns::Bool(),
+        "MUMPS: factorise symmetric Newton matrices (theta = 1 without "
+        "friction; the Kirchhoff pure penalty) as L D L^T with pivoting, "
+        "calling MUMPS directly (half the flops and memory of the LU that "
+        "Amesos offers), and report their negative eigenvalues (the "
+        "negative pivots; with theta = 1 a negative eigenvalue means the "
+        "formulation is not coercive, i.e. gamma0 is below the discrete "
+        "trace constant). false: LU through Amesos for every matrix. No "
+        "effect on KLU, the multigrid and the AMG solvers.");
     }
     prm.leave_subsection();
 
@@ -538,6 +548,7 @@ namespace NitscheContact
       damping_after         = prm.get_integer("Damping after");
       nonmonotone_window    = prm.get_integer("Nonmonotone window");
       reuse_factorization   = prm.get_bool("Reuse factorization");
+      symmetric_factorization = prm.get_bool("Symmetric factorization");
     }
     prm.leave_subsection();
 

@@ -7,16 +7,213 @@
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
 #include <Epetra_CrsMatrix.h>
+#include <Epetra_Import.h>
 #include <Epetra_Map.h>
 #include <Epetra_LinearProblem.h>
-#include <Epetra_Comm.h>
+#include <Epetra_MpiComm.h>
+#include <Epetra_Vector.h>
+#include <dmumps_c.h>
 
 #include <algorithm>
+#include <iostream>
+#include <cstdint>
 #include <limits>
+#include <string>
+#include <vector>
 
 namespace NitscheContact
 {
   using namespace dealii;
+
+  // MUMPS with SYM = 2 on the upper triangle of a distributed symmetric
+  // matrix: assembled distributed input (ICNTL(18) = 3) from the locally
+  // owned rows, right-hand side and solution centralised on rank 0 and
+  // moved with an Epetra import. The analysis is done once per sparsity
+  // pattern, as in the Amesos path.
+  struct ReusedFactorization::SymmetricMumps
+  {
+    DMUMPS_STRUC_C id;
+    bool           initialized = false; // id holds a MUMPS instance
+    bool           analysed    = false;
+    bool           factorized  = false;
+    std::size_t    n           = 0;  // global size
+    std::size_t    n_entries   = 0;  // entries of the full matrix (both triangles)
+    int            negative    = -1; // INFOG(12) of the last factorisation
+    // upper-triangle entries of the locally owned rows (1-based indices)
+    std::vector<MUMPS_INT> rows, cols;
+    std::vector<double>    values;
+    // all rows on rank 0, and the import from the vectors' distribution
+    std::unique_ptr<Epetra_Map>    root_map;
+    std::unique_ptr<Epetra_Import> to_root;
+    std::unique_ptr<Epetra_Vector> root_vector;
+
+    SymmetricMumps() = default;
+    SymmetricMumps(const SymmetricMumps &) = delete;
+    SymmetricMumps &
+    operator=(const SymmetricMumps &) = delete;
+
+    ~SymmetricMumps()
+    {
+      destroy();
+    }
+
+    void
+    destroy()
+    {
+      if (initialized)
+        {
+          id.job = -2; // collective
+          dmumps_c(&id);
+        }
+      initialized = analysed = factorized = false;
+    }
+
+    /// run one MUMPS phase; false with INFOG(1) < 0 (same on every rank)
+    bool
+    run(const int job)
+    {
+      id.job = job;
+      dmumps_c(&id);
+      return id.infog[0] >= 0;
+    }
+
+    std::string
+    error() const
+    {
+      return "MUMPS (L D L^T) error INFOG(1) = " +
+             std::to_string(id.infog[0]) +
+             ", INFOG(2) = " + std::to_string(id.infog[1]);
+    }
+
+    /// Gather the upper triangle of the owned rows of A; true if the
+    /// pattern equals that of the analysed matrix on every rank.
+    bool
+    gather_entries(const Epetra_CrsMatrix &A)
+    {
+      AssertThrow(A.NumGlobalRows64() <
+                    std::numeric_limits<MUMPS_INT>::max(),
+                  ExcMessage("the Newton matrix is too large for MUMPS' "
+                             "32-bit indices"));
+      std::vector<MUMPS_INT> new_rows, new_cols;
+      new_rows.reserve(A.NumMyNonzeros() / 2 + A.NumMyRows());
+      new_cols.reserve(new_rows.capacity());
+      values.clear();
+      values.reserve(new_rows.capacity());
+      for (int row = 0; row < A.NumMyRows(); ++row)
+        {
+          int     n_row = 0;
+          double *v;
+          int    *c;
+          A.ExtractMyRowView(row, n_row, v, c);
+          const long long global_row = A.RowMap().GID64(row);
+          for (int k = 0; k < n_row; ++k)
+            {
+              const long long global_col = A.ColMap().GID64(c[k]);
+              if (global_col < global_row)
+                continue;
+              new_rows.push_back(static_cast<MUMPS_INT>(global_row + 1));
+              new_cols.push_back(static_cast<MUMPS_INT>(global_col + 1));
+              values.push_back(v[k]);
+            }
+        }
+      int same = analysed && new_rows == rows && new_cols == cols &&
+                 n == static_cast<std::size_t>(A.NumGlobalRows64());
+      int all_same = 0;
+      A.Comm().MinAll(&same, &all_same, 1);
+      if (!all_same)
+        {
+          rows.swap(new_rows);
+          cols.swap(new_cols);
+        }
+      return all_same != 0;
+    }
+
+    /// L D L^T of A (symmetric; only its upper triangle is read)
+    void
+    factorize(const Epetra_CrsMatrix &A)
+    {
+      factorized = false;
+      if (!gather_entries(A))
+        {
+          destroy();
+          const auto *mpi = dynamic_cast<const Epetra_MpiComm *>(&A.Comm());
+          AssertThrow(mpi != nullptr,
+                      ExcMessage("the L D L^T factorisation needs an MPI "
+                                 "communicator"));
+          id              = DMUMPS_STRUC_C();
+          id.comm_fortran = static_cast<MUMPS_INT>(
+            MPI_Comm_c2f(mpi->GetMpiComm()));
+          id.par = 1; // the host works too
+          id.sym = 2; // symmetric, possibly indefinite: pivoting
+          AssertThrow(run(-1), ExcMessage(error()));
+          initialized  = true;
+          id.icntl[0]  = -1; // no error, diagnostic or statistics output
+          id.icntl[1]  = -1;
+          id.icntl[2]  = -1;
+          id.icntl[3]  = 0;
+          id.icntl[4]  = 0;  // assembled matrix
+          id.icntl[17] = 3;  // distributed entries
+          id.icntl[19] = 0;  // dense right-hand side on the host
+          id.icntl[20] = 0;  // centralised solution on the host
+          n            = A.NumGlobalRows64();
+          id.n         = static_cast<MUMPS_INT>(n);
+          id.nnz_loc   = rows.size();
+          id.irn_loc   = rows.data();
+          id.jcn_loc   = cols.data();
+          id.a_loc     = values.data();
+          AssertThrow(run(1), ExcMessage(error() + " in the analysis"));
+          analysed = true;
+
+          const bool host = A.Comm().MyPID() == 0;
+          const Epetra_BlockMap &range = A.RangeMap();
+          // (Epetra imports only between maps of the same index type)
+          if (range.GlobalIndicesInt())
+            root_map = std::make_unique<Epetra_Map>(
+              static_cast<int>(n), host ? static_cast<int>(n) : 0, 0,
+              A.Comm());
+          else
+            root_map = std::make_unique<Epetra_Map>(
+              static_cast<long long>(n), host ? static_cast<int>(n) : 0,
+              0LL, A.Comm());
+          to_root     = std::make_unique<Epetra_Import>(*root_map, range);
+          root_vector = std::make_unique<Epetra_Vector>(*root_map);
+        }
+      n_entries  = A.NumGlobalNonzeros64();
+      id.a_loc   = values.data();
+      // On a too small work space (INFOG(1) = -8, -9) MUMPS asks for more
+      // room: raise the relaxation ICNTL(14) (percent) and retry.
+      id.icntl[13] = 30;
+      for (int attempt = 0;; ++attempt)
+        {
+          if (run(2))
+            break;
+          const bool space = id.infog[0] == -8 || id.infog[0] == -9;
+          AssertThrow(space && attempt < 4,
+                      ExcMessage(error() + " in the factorisation"));
+          id.icntl[13] *= 2;
+        }
+      negative   = id.infog[11];
+      factorized = true;
+    }
+
+    /// x = A^{-1} b with the factors
+    void
+    solve(Epetra_MultiVector &x, const Epetra_MultiVector &b)
+    {
+      AssertThrow(root_vector->Import(b, *to_root, Insert) == 0,
+                  ExcInternalError());
+      id.nrhs = 1;
+      id.lrhs = static_cast<MUMPS_INT>(n);
+      id.rhs  = root_vector->Values(); // read on the host only
+      AssertThrow(run(3),
+                  ExcMessage(error() + " in the forward/backward "
+                                       "substitution"));
+      AssertThrow(x.Export(*root_vector, *to_root, Insert) == 0,
+                  ExcInternalError());
+    }
+  };
+
+
 
   ReusedFactorization::ReusedFactorization(const Settings &s)
     : settings(s)
@@ -29,6 +226,36 @@ namespace NitscheContact
     // the solver refers to the problem, the problem to the matrix copy
     direct.reset();
     problem.reset();
+    ldlt.reset();
+  }
+
+
+
+  int
+  ReusedFactorization::negative_eigenvalues() const
+  {
+    return ldlt && ldlt->factorized ? ldlt->negative : -1;
+  }
+
+
+
+  void
+  ReusedFactorization::report_inertia(
+    std::vector<std::pair<std::string, double>> &extra,
+    const bool                                   print,
+    const std::string                           &remedy) const
+  {
+    if (max_negative < 0)
+      return;
+    extra.emplace_back("newton_negative_eigenvalues", max_negative);
+    if (max_negative > 0 && print)
+      std::cout << "  warning: a symmetric Newton matrix of this cycle has "
+                << max_negative
+                << " negative eigenvalues (negative pivots of its L D L^T "
+                   "factorisation): the energy of the formulation is not "
+                   "convex on this mesh, the discrete problem may have "
+                   "several solutions; "
+                << remedy << std::endl;
   }
 
 
@@ -38,6 +265,7 @@ namespace NitscheContact
   {
     release();
     gmres_failed = false;
+    max_negative = -1;
   }
 
 
@@ -48,6 +276,7 @@ namespace NitscheContact
     direct.reset();
     problem.reset();
     factored.clear();
+    ldlt.reset();
   }
 
 
@@ -138,6 +367,11 @@ namespace NitscheContact
   ReusedFactorization::vmult(TrilinosWrappers::MPI::Vector       &x,
                              const TrilinosWrappers::MPI::Vector &b) const
   {
+    if (ldlt)
+      {
+        ldlt->solve(x.trilinos_vector(), b.trilinos_vector());
+        return;
+      }
     problem->SetLHS(&x.trilinos_vector());
     problem->SetRHS(
       const_cast<Epetra_MultiVector *>(
@@ -153,11 +387,25 @@ namespace NitscheContact
   ReusedFactorization::solve(const TrilinosWrappers::SparseMatrix &A,
                              TrilinosWrappers::MPI::Vector        &x,
                              const TrilinosWrappers::MPI::Vector  &b,
-                             const Change                          change)
+                             const Change                          change,
+                             const bool                            symmetric)
   {
     x = 0.;
-    const bool kept = settings.reuse && direct && factored.m() == A.m() &&
-                      factored.n_nonzero_elements() == A.n_nonzero_elements();
+    const bool use_ldlt = symmetric && settings.symmetric_ldlt &&
+                          settings.solver == "Amesos_Mumps";
+    if (use_ldlt != static_cast<bool>(ldlt))
+      {
+        release(); // the other kind of factorisation
+        if (use_ldlt)
+          ldlt = std::make_unique<SymmetricMumps>();
+      }
+    const bool kept =
+      settings.reuse &&
+      (use_ldlt ?
+         ldlt->factorized && ldlt->n == A.m() &&
+           ldlt->n_entries == A.n_nonzero_elements() :
+         direct && factored.m() == A.m() &&
+           factored.n_nonzero_elements() == A.n_nonzero_elements());
     if (kept && change == Change::none)
       {
         vmult(x, b);
@@ -188,7 +436,13 @@ namespace NitscheContact
             gmres_failed = true;
           }
       }
-    factorize(A);
+    if (use_ldlt)
+      {
+        ldlt->factorize(A.trilinos_matrix());
+        max_negative = std::max(max_negative, ldlt->negative);
+      }
+    else
+      factorize(A);
     vmult(x, b);
     return 0;
   }

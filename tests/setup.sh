@@ -8,7 +8,7 @@ set -euo pipefail
 # runs 3-4x faster than on the reference BLAS; doc/benchmarks.md). Debian
 # selects it through update-alternatives; the exact-output tests keep the
 # reference BLAS (tests/reference_blas.cmake).
-packages="cmake g++ make libdeal.ii-dev numdiff python3 python3-matplotlib openmpi-bin libopenblas0-serial"
+packages="cmake g++ make libdeal.ii-dev libmumps-dev numdiff python3 python3-matplotlib openmpi-bin libopenblas0-serial"
 missing=""
 for p in $packages; do
   dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"

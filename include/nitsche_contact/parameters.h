@@ -115,6 +115,9 @@ namespace NitscheContact
     unsigned int    damping_after          = 100000;
     unsigned int    nonmonotone_window     = 5;
     bool            reuse_factorization    = true;
+    /// Nonlinear solver/Symmetric factorization: L D L^T (MUMPS) for
+    /// symmetric Newton matrices
+    bool            symmetric_factorization = true;
 
     // "Output"
     std::string                     output_directory = "output";

@@ -319,8 +319,10 @@ namespace NitscheContact
     , fe(FE_Q<3>(read_degree(ph)), 3)
     , mapping(1)
     , obstacle(common)
-    , direct_solver(ReusedFactorization::Settings{"Amesos_Mumps",
-                                                  common.reuse_factorization})
+    , direct_solver(
+        ReusedFactorization::Settings{"Amesos_Mumps",
+                                      common.reuse_factorization,
+                                      common.symmetric_factorization})
   {
     ph.enter_subsection("Elasticity");
     degree              = ph.get_integer("Polynomial degree");
@@ -995,7 +997,8 @@ namespace NitscheContact
           increment,
           residual,
           ReusedFactorization::change_of_newton_matrix(last_changed,
-                                                       prm.friction > 0.));
+                                                       prm.friction > 0.),
+          prm.theta == 1. && prm.friction == 0.);
       }
     else
       {
@@ -1258,6 +1261,11 @@ namespace NitscheContact
       {"max_friction_ratio", Utilities::MPI::max(max_ratio, comm)},
       {"nitsche_trace_constant", trace_constant_value},
       {"relative_residual", relative_residual}};
+    direct_solver.report_inertia(
+      res.extra,
+      Utilities::MPI::this_mpi_process(comm) == 0,
+      "raise 'Contact/Nitsche gamma0' (its coercivity bound is "
+      "(1+theta)^2/4 nitsche_trace_constant) or use theta = -1");
 
     if (exact_solution)
       {

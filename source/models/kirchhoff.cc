@@ -200,7 +200,8 @@ namespace NitscheContact
       direct_solver = param.get("Direct solver");
       factorization = std::make_unique<ReusedFactorization>(
         ReusedFactorization::Settings{direct_solver,
-                                      common.reuse_factorization});
+                                      common.reuse_factorization,
+                                      common.symmetric_factorization});
       use_multigrid = (param.get("Linear solver") == "multigrid");
       krylov_tolerance = param.get_double("Krylov tolerance");
       check_multigrid  = param.get_bool("Check multigrid");
@@ -997,7 +998,8 @@ namespace NitscheContact
           x,
           b,
           ReusedFactorization::change_of_newton_matrix(status_settled ? 0 : 1,
-                                                       false));
+                                                       false),
+          jacobian_is_symmetric());
         std::copy(x.begin(), x.end(), increment.begin());
       }
     constraints.distribute(increment);
@@ -1415,6 +1417,13 @@ namespace NitscheContact
     res.extra.emplace_back("max_penetration", max_penetration);
     res.extra.emplace_back("load_total", load_total);
     res.extra.emplace_back("r", kit.r);
+    factorization->report_inertia(
+      res.extra,
+      true,
+      formulation == Formulation::gsv ?
+        "lower 'Kirchhoff/Stabilisation alpha' (theory bound alpha D < "
+        "1.89e-4 for nu = 0.3)" :
+        "raise 'Contact/Nitsche gamma0' or use theta = -1");
     res.extra.emplace_back("energy_norm", solution_energy_norm());
     return res;
   }

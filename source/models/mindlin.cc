@@ -193,7 +193,8 @@ namespace NitscheContact
     , direct_solver(ReusedFactorization::Settings{
         settings.multigrid ? std::string("Amesos_Mumps") :
                              settings.linear_solver,
-        common.reuse_factorization})
+        common.reuse_factorization,
+        common.symmetric_factorization})
     , obstacle(common)
   {
     if (Utilities::MPI::n_mpi_processes(comm) > 1)
@@ -1140,7 +1141,8 @@ namespace NitscheContact
       x,
       b,
       ReusedFactorization::change_of_newton_matrix(last_changed,
-                                                   prm.friction > 0.));
+                                                   prm.friction > 0.),
+      prm.theta == 1. && prm.friction == 0.);
     const double *xp = x.trilinos_vector()[0];
     std::copy(xp, xp + increment.size(), increment.begin());
     constraints.distribute(increment);
@@ -1429,6 +1431,10 @@ namespace NitscheContact
         res.errors.emplace_back("H1(phi)", std::sqrt(err_phi_h1));
       }
     res.extra.emplace_back("nitsche_r", r);
+    direct_solver.report_inertia(res.extra,
+                                 true,
+                                 "raise 'Contact/Nitsche gamma0' or use "
+                                 "theta = -1");
     res.extra.emplace_back("max_bottom_inplane_displacement", max_slip);
     res.extra.emplace_back("max_bottom_inplane_displacement_in_contact",
                            max_contact_slip);

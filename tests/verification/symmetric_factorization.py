@@ -1,0 +1,100 @@
+"""The L D L^T factorisation of symmetric Newton matrices ('Nonlinear
+solver/Symmetric factorization = true', MUMPS called directly with SYM = 2)
+against the LU that Amesos offers (= false), a second method of the program:
+on the paper's 3D test (Q2, 3x3 Gauss-Lobatto contact points, 8x8x1 ->
+16x16x1) and on the paper's Kirchhoff test (GSV, MUMPS) both reach the same
+solutions, and the distributed L D L^T on 2 MPI ranks the same as on one.
+
+Its inertia (summary extra 'newton_negative_eigenvalues': the negative
+pivots, by Sylvester's law the negative eigenvalues) against independent
+coercivity bounds:
+- 3D, theta = 1: no negative eigenvalue with gamma0 = 60, above the
+  trace-constant bound (1+theta)^2/4 C_n = 33.6 of this contact rule that
+  the program computes on a single cell (verification/nitsche_trace_constant
+  checks C_n against theory.md 2.4); some, and a warning, with gamma0 = 20
+  below it (an LDL^T of the dumped 32x32x1 matrix in scipy counted 237,
+  doc/benchmarks.md);
+- Kirchhoff GSV: none with alpha D = 1e-4 below the theory bound 1.89e-4
+  (theory.md 4.4), some with alpha D = 5e-4 above it.
+Without L D L^T (LU) no count is reported."""
+import os, re, sys
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from common import parse_args, run, check, compare_cycle, finish
+
+args = parse_args()
+here = os.path.dirname(os.path.abspath(__file__))
+params = os.path.join(here, "..", "..", "parameters")
+
+
+def edit(text, entries, name):
+    for entry, value in entries:
+        text, n = re.subn(r"(?m)^(\s*set %s\s*=).*$" % re.escape(entry),
+                          lambda m: m.group(1) + " " + value, text)
+        check(n == 1, "%s: one entry '%s'" % (name, entry))
+    return text
+
+
+def negatives(summary):
+    return [dict(c["extra"]).get("newton_negative_eigenvalues") for c in summary["cycles"]]
+
+
+WARNING = "negative eigenvalues (negative pivots of its L D L^T"
+
+# --- 3D elasticity
+paper_3d = open(os.path.join(params, "paper_3d.prm")).read()
+
+
+def prm_3d(gamma0, symmetric):
+    return edit(paper_3d, [("Number of cycles", "2"), ("Nitsche gamma0", str(gamma0)),
+                           ("Contact quadrature points",
+                            "3\n  set Contact quadrature rule = lobatto"),
+                           ("Tolerance", "1e-6\n  set Symmetric factorization = %s"
+                            % ("true" if symmetric else "false"))], "paper_3d.prm")
+
+
+ldlt, out = run(args, "3d_ldlt", prm_3d(60, True))
+lu, _ = run(args, "3d_lu", prm_3d(60, False))
+ldlt2, _ = run(args, "3d_ldlt_np2", prm_3d(60, True), np=2)
+bound = (1 + 1) ** 2 / 4 * dict(ldlt["cycles"][-1]["extra"])["nitsche_trace_constant"]
+check(20 < bound < 60, "3D: trace-constant bound %.4g between gamma0 = 20 and 60" % bound)
+for c in range(2):
+    compare_cycle("3D gamma0 60 cycle %d" % c, lu["cycles"][c], ldlt["cycles"][c], 1e-5,
+                  ("LU", "LDL^T"))
+    compare_cycle("3D gamma0 60 cycle %d" % c, ldlt["cycles"][c], ldlt2["cycles"][c], 1e-5,
+                  ("1 rank", "2 ranks"))
+check(negatives(ldlt) == [0, 0], "3D gamma0 60: no negative eigenvalue (%s)" % negatives(ldlt))
+check(negatives(ldlt2) == [0, 0], "3D gamma0 60, 2 ranks: no negative eigenvalue (%s)"
+      % negatives(ldlt2))
+check(negatives(lu) == [None, None], "3D, LU: no inertia reported")
+check(WARNING not in out, "3D gamma0 60: no inertia warning")
+
+low, out = run(args, "3d_ldlt_gamma20", prm_3d(20, True))
+check(all(n is not None and n > 0 for n in negatives(low)),
+      "3D gamma0 20 < bound: negative eigenvalues on every cycle (%s)" % negatives(low))
+check(out.count(WARNING) == 2 and "raise 'Contact/Nitsche gamma0'" in out,
+      "3D gamma0 20: one inertia warning per cycle, naming gamma0")
+
+# --- Kirchhoff, GSV, MUMPS
+paper_k = open(os.path.join(params, "paper_kirchhoff.prm")).read()
+
+
+def prm_k(alpha, symmetric):
+    return edit(paper_k, [("Number of cycles", "2"), ("Stabilisation alpha", str(alpha)),
+                          ("Tolerance", "1e-10\n  set Symmetric factorization = %s"
+                           % ("true" if symmetric else "false"))], "paper_kirchhoff.prm")
+
+
+ldlt, out = run(args, "k_ldlt", prm_k(1e-4, True))
+lu, _ = run(args, "k_lu", prm_k(1e-4, False))
+for c in range(2):
+    compare_cycle("Kirchhoff cycle %d" % c, lu["cycles"][c], ldlt["cycles"][c], 1e-8,
+                  ("LU", "LDL^T"))
+check(negatives(ldlt) == [0, 0], "Kirchhoff alpha D 1e-4: no negative eigenvalue (%s)"
+      % negatives(ldlt))
+check(WARNING not in out, "Kirchhoff alpha D 1e-4: no inertia warning")
+high, out = run(args, "k_ldlt_alpha5e-4", prm_k(5e-4, True))
+check(all(n is not None and n > 0 for n in negatives(high)),
+      "Kirchhoff alpha D 5e-4 > 1.89e-4: negative eigenvalues (%s)" % negatives(high))
+check(WARNING in out and "Stabilisation alpha" in out,
+      "Kirchhoff alpha D 5e-4: inertia warning naming alpha")
+finish()
