@@ -16,7 +16,6 @@
 
 #include <algorithm>
 #include <iostream>
-#include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
@@ -132,8 +131,9 @@ namespace NitscheContact
     void
     factorize(const Epetra_CrsMatrix &A)
     {
-      factorized = false;
-      if (!gather_entries(A))
+      factorized       = false;
+      const bool reused = gather_entries(A); // the analysis of A's pattern
+      if (!reused)
         {
           destroy();
           const auto *mpi = dynamic_cast<const Epetra_MpiComm *>(&A.Comm());
@@ -155,6 +155,14 @@ namespace NitscheContact
           id.icntl[17] = 3;  // distributed entries
           id.icntl[19] = 0;  // dense right-hand side on the host
           id.icntl[20] = 0;  // centralised solution on the host
+          // On several ranks the root node would go to ScaLAPACK, which
+          // does not count negative pivots (INFOG(12) would then be a
+          // lower bound): factorise it on one rank, so the inertia is exact.
+          if (A.Comm().NumProc() > 1)
+            id.icntl[12] = 1;
+          // work-space relaxation (percent), at least 30; raised below
+          // when MUMPS asks for more, and kept for the later matrices
+          id.icntl[13] = std::max<MUMPS_INT>(id.icntl[13], 30);
           n            = A.NumGlobalRows64();
           id.n         = static_cast<MUMPS_INT>(n);
           id.nnz_loc   = rows.size();
@@ -178,19 +186,27 @@ namespace NitscheContact
           to_root     = std::make_unique<Epetra_Import>(*root_map, range);
           root_vector = std::make_unique<Epetra_Vector>(*root_map);
         }
-      n_entries  = A.NumGlobalNonzeros64();
-      id.a_loc   = values.data();
+      n_entries = A.NumGlobalNonzeros64();
+      id.a_loc  = values.data();
       // On a too small work space (INFOG(1) = -8, -9) MUMPS asks for more
-      // room: raise the relaxation ICNTL(14) (percent) and retry.
-      id.icntl[13] = 30;
+      // room: raise the relaxation ICNTL(14) and retry.
       for (int attempt = 0;; ++attempt)
         {
           if (run(2))
             break;
           const bool space = id.infog[0] == -8 || id.infog[0] == -9;
-          AssertThrow(space && attempt < 4,
-                      ExcMessage(error() + " in the factorisation"));
-          id.icntl[13] *= 2;
+          if (space && attempt < 4)
+            id.icntl[13] *= 2;
+          else if (reused)
+            {
+              // (the same on every rank) As the Amesos path: start over
+              // with a new analysis of this matrix before giving up.
+              analysed = false;
+              factorize(A);
+              return;
+            }
+          else
+            AssertThrow(false, ExcMessage(error() + " in the factorisation"));
         }
       negative   = id.infog[11];
       factorized = true;
@@ -227,14 +243,6 @@ namespace NitscheContact
     direct.reset();
     problem.reset();
     ldlt.reset();
-  }
-
-
-
-  int
-  ReusedFactorization::negative_eigenvalues() const
-  {
-    return ldlt && ldlt->factorized ? ldlt->negative : -1;
   }
 
 

@@ -29,7 +29,7 @@
 // Newton matrix of the paper test: 3.05e10 against 5.98e10 flops, 3.0 s
 // against 5.0 s). By Sylvester's law of inertia the number of negative
 // pivots of L D L^T is the number of negative eigenvalues of the matrix;
-// it is reported (negative_eigenvalues()), so a theta = 1 formulation that
+// it is reported (report_inertia()), so a theta = 1 formulation that
 // is not coercive (gamma0 below the discrete trace constant: the Newton
 // matrix, the Hessian of the energy, is then indefinite) is detected on
 // every factorisation.
@@ -112,12 +112,6 @@ namespace NitscheContact
           const dealii::TrilinosWrappers::MPI::Vector  &b,
           Change                                        change,
           bool                                          symmetric = false);
-
-    /// Number of negative eigenvalues of the last factorised matrix (the
-    /// negative pivots of its L D L^T factorisation), or -1 when it was
-    /// factorised as LU (no inertia known).
-    int
-    negative_eigenvalues() const;
 
     /// Add "newton_negative_eigenvalues", the largest number of negative
     /// eigenvalues of the matrices factorised as L D L^T since clear(),

@@ -3,7 +3,8 @@ solver/Symmetric factorization = true', MUMPS called directly with SYM = 2)
 against the LU that Amesos offers (= false), a second method of the program:
 on the paper's 3D test (Q2, 3x3 Gauss-Lobatto contact points, 8x8x1 ->
 16x16x1) and on the paper's Kirchhoff test (GSV, MUMPS) both reach the same
-solutions, and the distributed L D L^T on 2 MPI ranks the same as on one.
+solutions, and the distributed L D L^T on 2 MPI ranks the same solutions
+and negative-eigenvalue counts as on one.
 
 Its inertia (summary extra 'newton_negative_eigenvalues': the negative
 pivots, by Sylvester's law the negative eigenvalues) against independent
@@ -73,6 +74,12 @@ check(all(n is not None and n > 0 for n in negatives(low)),
       "3D gamma0 20 < bound: negative eigenvalues on every cycle (%s)" % negatives(low))
 check(out.count(WARNING) == 2 and "raise 'Contact/Nitsche gamma0'" in out,
       "3D gamma0 20: one inertia warning per cycle, naming gamma0")
+# on 2 ranks MUMPS must factorise its root node itself (ScaLAPACK does not
+# count negative pivots): the same counts as on one rank
+low2, _ = run(args, "3d_ldlt_gamma20_np2", prm_3d(20, True), np=2)
+check(negatives(low2) == negatives(low),
+      "3D gamma0 20: the same negative eigenvalues on 2 ranks (%s) as on 1 (%s)"
+      % (negatives(low2), negatives(low)))
 
 # --- Kirchhoff, GSV, MUMPS
 paper_k = open(os.path.join(params, "paper_kirchhoff.prm")).read()
