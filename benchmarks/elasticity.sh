@@ -11,8 +11,12 @@
 # (default, as paper_3d.prm) or 'lobatto' (the Q2 face nodes; fewer Newton
 # iterations, doc/benchmarks.md). The seventh sets gamma0 (default 20, as
 # paper_3d.prm; with the Lobatto points theta = 1 needs gamma0 above their
-# trace constant 33.6 on these flat cells, e.g. 60, doc/benchmarks.md). Usage:
-#   benchmarks/elasticity.sh [path/to/nitsche-contact] [cycles] [direct|amg] [ranks] [plane|all] [gauss|lobatto] [gamma0]
+# trace constant 33.6 on these flat cells, e.g. 60, doc/benchmarks.md). The
+# eighth sets the in-plane subdivisions of the first mesh (default 8; 11
+# with 4 cycles gives 88x88x1 cells, 281,961 DoFs). The table's column
+# 'neg' is the largest number of negative eigenvalues of a Newton matrix of
+# the cycle (from the L D L^T factorisation; '-' when it was LU). Usage:
+#   benchmarks/elasticity.sh [path/to/nitsche-contact] [cycles] [direct|amg] [ranks] [plane|all] [gauss|lobatto] [gamma0] [subdivisions]
 # The program must be built with CMAKE_BUILD_TYPE=Release. Nonlinear
 # tolerance 1e-6 (the round-off floor of this thin plate is ~1e-7).
 set -e
@@ -35,10 +39,14 @@ gamma0=${7:-20}
 case "$gamma0" in
   ''|*[!0-9.e+-]*) echo "benchmarks/elasticity.sh: gamma0 must be a positive number, not '$gamma0'" >&2; exit 1 ;;
 esac
+subdivisions=${8:-8}
+case "$subdivisions" in
+  ''|*[!0-9]*|0) echo "benchmarks/elasticity.sh: subdivisions must be a positive integer, not '$subdivisions'" >&2; exit 1 ;;
+esac
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 sed -e "s/^\( *set Number of cycles *=\).*/\1 $cycles/" \
-    -e "s/^\( *set Subdivisions *=\).*/\1 8, 8, 1/" \
+    -e "s/^\( *set Subdivisions *=\).*/\1 $subdivisions, $subdivisions, 1/" \
     -e "s/^\( *set Tolerance *=\).*/\1 1e-6/" \
     -e "s/^\( *set Nitsche gamma0 *=\).*/\1 $gamma0/" \
     -e "s/^\( *set Maximum iterations *=\).*/\1 300/" \
@@ -60,16 +68,18 @@ print("3D elasticity model (Q2), paper test, linear solver %s, %s MPI rank(s), "
       "3x3 %s contact points per face, gamma0 %s (trace constant C_n %.3g)"
       % (sys.argv[4], sys.argv[5], sys.argv[6], sys.argv[7],
          dict(s["cycles"][-1]["extra"])["nitsche_trace_constant"]))
-print("%5s %9s %5s %8s %8s %8s %8s %8s %8s %9s" % ("cycle", "dofs", "its", "setup",
-      "assembly", "solve", "postproc", "output", "total", "force"))
+print("%5s %9s %5s %8s %8s %8s %8s %8s %8s %9s %5s" % ("cycle", "dofs", "its", "setup",
+      "assembly", "solve", "postproc", "output", "total", "force", "neg"))
 acc = 0.0
 for c in s["cycles"]:
     t = c["wall_times"]
     tot = t["setup"] + t["assembly"] + t["solve"] + t["postprocess"] + t["output"]
     acc += tot
-    print("%5d %9d %5d %8.2f %8.2f %8.2f %8.2f %8.2f %8.2f %9.6f" % (c["cycle"], c["n_dofs"],
+    neg = dict(c["extra"]).get("newton_negative_eigenvalues")
+    print("%5d %9d %5d %8.2f %8.2f %8.2f %8.2f %8.2f %8.2f %9.6f %5s" % (c["cycle"], c["n_dofs"],
           c["nonlinear_iterations"], t["setup"], t["assembly"], t["solve"],
-          t["postprocess"], t["output"], tot, c["contact_force"]))
+          t["postprocess"], t["output"], tot, c["contact_force"],
+          "-" if neg is None else "%d" % neg))
 print("sum of phases %.1f s, wall clock of the run %.1f s"
       % (acc, float(sys.argv[3]) - float(sys.argv[2])))
 PY
