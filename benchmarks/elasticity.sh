@@ -15,8 +15,10 @@
 # eighth sets the in-plane subdivisions of the first mesh (default 8; 11
 # with 4 cycles gives 88x88x1 cells, 281,961 DoFs). The table's column
 # 'neg' is the largest number of negative eigenvalues of a Newton matrix of
-# the cycle (from the L D L^T factorisation; '-' when it was LU). Usage:
-#   benchmarks/elasticity.sh [path/to/nitsche-contact] [cycles] [direct|amg] [ranks] [plane|all] [gauss|lobatto] [gamma0] [subdivisions]
+# the cycle (from the L D L^T factorisation; '-' when it was LU). The ninth
+# selects how MUMPS factorises the (symmetric, theta = 1) Newton matrices:
+# 'ldlt' (default) or 'lu' (through Amesos, as before session 10). Usage:
+#   benchmarks/elasticity.sh [path/to/nitsche-contact] [cycles] [direct|amg] [ranks] [plane|all] [gauss|lobatto] [gamma0] [subdivisions] [ldlt|lu]
 # The program must be built with CMAKE_BUILD_TYPE=Release. Nonlinear
 # tolerance 1e-6 (the round-off floor of this thin plate is ~1e-7).
 set -e
@@ -39,6 +41,12 @@ gamma0=${7:-20}
 case "$gamma0" in
   ''|*[!0-9.e+-]*) echo "benchmarks/elasticity.sh: gamma0 must be a positive number, not '$gamma0'" >&2; exit 1 ;;
 esac
+factorization=${9:-ldlt}
+case "$factorization" in
+  ldlt) symmetric=true ;;
+  lu) symmetric=false ;;
+  *) echo "benchmarks/elasticity.sh: factorization must be 'ldlt' or 'lu', not '$factorization'" >&2; exit 1 ;;
+esac
 subdivisions=${8:-8}
 case "$subdivisions" in
   ''|*[!0-9]*|0) echo "benchmarks/elasticity.sh: subdivisions must be a positive integer, not '$subdivisions'" >&2; exit 1 ;;
@@ -47,7 +55,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 sed -e "s/^\( *set Number of cycles *=\).*/\1 $cycles/" \
     -e "s/^\( *set Subdivisions *=\).*/\1 $subdivisions, $subdivisions, 1/" \
-    -e "s/^\( *set Tolerance *=\).*/\1 1e-6/" \
+    -e "s/^\( *set Tolerance *=\).*/\1 1e-6\n  set Symmetric factorization = $symmetric/" \
     -e "s/^\( *set Nitsche gamma0 *=\).*/\1 $gamma0/" \
     -e "s/^\( *set Maximum iterations *=\).*/\1 300/" \
     -e "s|^\( *set Directory *=\).*|\1 $work/out|" \
@@ -61,12 +69,12 @@ if [ "$ranks" -gt 1 ]; then run=(mpirun -np "$ranks" "$exe"); fi
 start=$(date +%s.%N)
 "${run[@]}" "$work/bench.prm" > "$work/log" 2>&1 || { cat "$work/log"; exit 1; }
 end=$(date +%s.%N)
-python3 - "$work/out/summary.json" "$start" "$end" "$solver" "$ranks" "$rule" "$gamma0" <<'PY'
+python3 - "$work/out/summary.json" "$start" "$end" "$solver" "$ranks" "$rule" "$gamma0" "$factorization" <<'PY'
 import json, sys
 s = json.load(open(sys.argv[1]))
-print("3D elasticity model (Q2), paper test, linear solver %s, %s MPI rank(s), "
+print("3D elasticity model (Q2), paper test, linear solver %s (%s), %s MPI rank(s), "
       "3x3 %s contact points per face, gamma0 %s (trace constant C_n %.3g)"
-      % (sys.argv[4], sys.argv[5], sys.argv[6], sys.argv[7],
+      % (sys.argv[4], sys.argv[8], sys.argv[5], sys.argv[6], sys.argv[7],
          dict(s["cycles"][-1]["extra"])["nitsche_trace_constant"]))
 print("%5s %9s %5s %8s %8s %8s %8s %8s %8s %9s %5s" % ("cycle", "dofs", "its", "setup",
       "assembly", "solve", "postproc", "output", "total", "force", "neg"))
