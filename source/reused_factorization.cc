@@ -249,21 +249,10 @@ namespace NitscheContact
 
   void
   ReusedFactorization::report_inertia(
-    std::vector<std::pair<std::string, double>> &extra,
-    const bool                                   print,
-    const std::string                           &remedy) const
+    std::vector<std::pair<std::string, double>> &extra) const
   {
-    if (max_negative < 0)
-      return;
-    extra.emplace_back("newton_negative_eigenvalues", max_negative);
-    if (max_negative > 0 && print)
-      std::cout << "  warning: a symmetric Newton matrix of this cycle has "
-                << max_negative
-                << " negative eigenvalues (negative pivots of its L D L^T "
-                   "factorisation): the energy of the formulation is not "
-                   "convex on this mesh, the discrete problem may have "
-                   "several solutions; "
-                << remedy << std::endl;
+    if (max_negative >= 0)
+      extra.emplace_back("newton_negative_eigenvalues", max_negative);
   }
 
 
@@ -447,6 +436,15 @@ namespace NitscheContact
     if (use_ldlt)
       {
         ldlt->factorize(A.trilinos_matrix());
+        if (ldlt->negative > 0 && max_negative <= 0 &&
+            A.trilinos_matrix().Comm().MyPID() == 0)
+          std::cout << "    warning: the Newton matrix has " << ldlt->negative
+                    << " negative eigenvalues (negative pivots of its "
+                       "L D L^T factorisation): the energy of the "
+                       "formulation is not convex on this mesh, Newton may "
+                       "fail and the discrete problem may have several "
+                       "solutions; "
+                    << settings.inertia_remedy << std::endl;
         max_negative = std::max(max_negative, ldlt->negative);
       }
     else

@@ -62,6 +62,9 @@ namespace NitscheContact
       /// symmetric as L D L^T (MUMPS called directly, SYM = 2); false: LU
       /// through Amesos for every matrix.
       bool symmetric_ldlt = true;
+      /// What the warning on an L D L^T factorisation with negative
+      /// eigenvalues tells the user to do (the model's parameters).
+      std::string inertia_remedy = "";
       /// GMRES iteration limit with the kept factorisation.
       unsigned int max_iterations = 10;
       /// GMRES (left preconditioned) stops when the preconditioned residual
@@ -114,14 +117,13 @@ namespace NitscheContact
           bool                                          symmetric = false);
 
     /// Add "newton_negative_eigenvalues", the largest number of negative
-    /// eigenvalues of the matrices factorised as L D L^T since clear(),
-    /// to `extra`, and if it is positive print a warning to std::cout
-    /// (when `print`) that names `remedy`. Nothing without an L D L^T
-    /// factorisation since clear().
+    /// eigenvalues of the matrices factorised as L D L^T since clear()
+    /// (i.e. on this mesh), to `extra`; nothing without such a
+    /// factorisation. (The first factorisation on a mesh with negative
+    /// eigenvalues also prints a warning with Settings::inertia_remedy, on
+    /// rank 0, at once: a run that then does not converge shows it too.)
     void
-    report_inertia(std::vector<std::pair<std::string, double>> &extra,
-                   bool                                          print,
-                   const std::string                            &remedy) const;
+    report_inertia(std::vector<std::pair<std::string, double>> &extra) const;
 
     /// x = A_factored^{-1} b with the kept factorisation (the
     /// preconditioner of the GMRES iteration).

@@ -199,9 +199,14 @@ namespace NitscheContact
       n_quadrature = param.get_integer("Quadrature points");
       direct_solver = param.get("Direct solver");
       factorization = std::make_unique<ReusedFactorization>(
-        ReusedFactorization::Settings{direct_solver,
-                                      common.reuse_factorization,
-                                      common.symmetric_factorization});
+        ReusedFactorization::Settings{
+          direct_solver,
+          common.reuse_factorization,
+          common.symmetric_factorization,
+          formulation == Formulation::gsv ?
+            "lower 'Kirchhoff/Stabilisation alpha' (theory bound alpha D < "
+            "1.89e-4 for nu = 0.3)" :
+            "raise 'Contact/Nitsche gamma0' or use theta = -1"});
       use_multigrid = (param.get("Linear solver") == "multigrid");
       krylov_tolerance = param.get_double("Krylov tolerance");
       check_multigrid  = param.get_bool("Check multigrid");
@@ -1417,13 +1422,7 @@ namespace NitscheContact
     res.extra.emplace_back("max_penetration", max_penetration);
     res.extra.emplace_back("load_total", load_total);
     res.extra.emplace_back("r", kit.r);
-    factorization->report_inertia(
-      res.extra,
-      true,
-      formulation == Formulation::gsv ?
-        "lower 'Kirchhoff/Stabilisation alpha' (theory bound alpha D < "
-        "1.89e-4 for nu = 0.3)" :
-        "raise 'Contact/Nitsche gamma0' or use theta = -1");
+    factorization->report_inertia(res.extra);
     res.extra.emplace_back("energy_norm", solution_energy_norm());
     return res;
   }

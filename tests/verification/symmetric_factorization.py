@@ -17,6 +17,14 @@ coercivity bounds:
   doc/benchmarks.md);
 - Kirchhoff GSV: none with alpha D = 1e-4 below the theory bound 1.89e-4
   (theory.md 4.4), some with alpha D = 5e-4 above it.
+- Mindlin, theta = 1, clamped: the literal insertion removes c = 3 (1-nu^2)
+  (lambda/E)^2 D / gamma0 of the (div phi)^2 bending stiffness everywhere
+  (doc/mindlin.md), and for clamped rotations the bending form is
+  >= (D - c) int (div phi)^2 + D (1-nu)/2 int (curl phi)^2 with equality
+  for curl-free fields, so the Newton matrix is indefinite exactly below
+  gamma0* = 3 (1-nu^2) (lambda/E)^2 = 0.9087 (nu = 0.3): some negative
+  eigenvalues at gamma0 = 0.87 (the warning is printed at the first such
+  factorisation, before the run stops without converging), none at 0.95.
 Without L D L^T (LU) no count is reported."""
 import os, re, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -104,4 +112,27 @@ check(all(n is not None and n > 0 for n in negatives(high)),
       "Kirchhoff alpha D 5e-4 > 1.89e-4: negative eigenvalues (%s)" % negatives(high))
 check(WARNING in out and "Stabilisation alpha" in out,
       "Kirchhoff alpha D 5e-4: inertia warning naming alpha")
+# --- Mindlin, theta = 1, clamped, around gamma0* = 0.9087
+paper_m = open(os.path.join(params, "paper_mindlin.prm")).read()
+
+
+def prm_m(gamma0, allow):
+    # (close to gamma0* the plate is very soft and Newton slow: the
+    # inertia, not convergence, is checked here)
+    return edit(paper_m, [("Number of cycles", "2"), ("Nitsche gamma0", str(gamma0)),
+                          ("Maximum iterations",
+                           "40\n  set Allow non-convergence = %s" % allow)],
+                "paper_mindlin.prm")
+
+
+nu = 0.3
+lam_over_E = nu / ((1 + nu) * (1 - 2 * nu))
+gamma_star = 3 * (1 - nu ** 2) * lam_over_E ** 2
+check(abs(gamma_star - 0.9087) < 1e-4, "Mindlin: gamma0* = %.5f" % gamma_star)
+_, out = run(args, "m_gamma0.87", prm_m(0.87, "false"), expect_status=2)
+check(WARNING in out and "Nitsche gamma0" in out,
+      "Mindlin gamma0 0.87 < gamma0*: inertia warning naming gamma0")
+above, out = run(args, "m_gamma0.95", prm_m(0.95, "true"))
+check(negatives(above) == [0, 0] and WARNING not in out,
+      "Mindlin gamma0 0.95 > gamma0*: no negative eigenvalue (%s)" % negatives(above))
 finish()
