@@ -161,7 +161,8 @@ namespace NitscheContact
           if (A.Comm().NumProc() > 1)
             id.icntl[12] = 1;
           // work-space relaxation (percent), at least 30; raised below
-          // when MUMPS asks for more, and kept for the later matrices
+          // when MUMPS asks for more, and kept for the later matrices of
+          // this analysis
           id.icntl[13] = std::max<MUMPS_INT>(id.icntl[13], 30);
           n            = A.NumGlobalRows64();
           id.n         = static_cast<MUMPS_INT>(n);

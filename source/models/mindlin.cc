@@ -195,11 +195,11 @@ namespace NitscheContact
                              settings.linear_solver,
         common.reuse_factorization,
         common.symmetric_factorization,
-        "raise 'Contact/Nitsche gamma0' (theta = 1 takes 3 (1-nu^2) "
-        "(lambda/E)^2 / gamma0 of the bending stiffness away: clamped plates "
-        "need gamma0 > 3 (1-nu^2) (lambda/E)^2, 0.909 for nu = 0.3, other "
-        "edge conditions up to gamma0 > 1.4; doc/mindlin.md) or use "
-        "theta = -1"})
+        "raise 'Contact/Nitsche gamma0' (theta = 1 takes a fraction "
+        "3 (1-nu^2) (lambda/E)^2 / gamma0 of the bending stiffness away; "
+        "with the default contact points and no membrane unknowns clamped "
+        "plates need gamma0 > 0.909 for nu = 0.3, other edges up to 1.4, "
+        "more otherwise; doc/mindlin.md) or use theta = -1"})
     , obstacle(common)
   {
     if (Utilities::MPI::n_mpi_processes(comm) > 1)

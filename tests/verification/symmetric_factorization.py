@@ -17,14 +17,16 @@ coercivity bounds:
   doc/benchmarks.md);
 - Kirchhoff GSV: none with alpha D = 1e-4 below the theory bound 1.89e-4
   (theory.md 4.4), some with alpha D = 5e-4 above it.
-- Mindlin, theta = 1, clamped: the literal insertion removes c = 3 (1-nu^2)
-  (lambda/E)^2 D / gamma0 of the (div phi)^2 bending stiffness everywhere
-  (doc/mindlin.md), and for clamped rotations the bending form is
-  >= (D - c) int (div phi)^2 + D (1-nu)/2 int (curl phi)^2 with equality
-  for curl-free fields, so the Newton matrix is indefinite exactly below
-  gamma0* = 3 (1-nu^2) (lambda/E)^2 = 0.9087 (nu = 0.3): some negative
-  eigenvalues at gamma0 = 0.87 (the warning is printed at the first such
-  factorisation, before the run stops without converging), none at 0.95.
+- Mindlin, theta = 1, clamped, no membrane unknowns, 4x4 Gauss contact
+  points: the literal insertion removes c = 3 (1-nu^2) (lambda/E)^2 D /
+  gamma0 of the (div phi)^2 bending stiffness everywhere (doc/mindlin.md),
+  and for clamped rotations the bending form equals (D - c) int (div phi)^2
+  + D (1-nu)/2 int (curl phi)^2, so the Newton matrix is positive definite
+  for gamma0 > gamma0* = 3 (1-nu^2) (lambda/E)^2 (0.9087 for nu = 0.3) on
+  every mesh, and indefinite below it once the mesh has a curl-free, nearly
+  shear-free rotation field: negative eigenvalues at 0.957 gamma0* (the
+  warning is printed at the first such factorisation), none at 1.045
+  gamma0*.
 Without L D L^T (LU) no count is reported."""
 import os, re, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -83,10 +85,14 @@ check(all(n is not None and n > 0 for n in negatives(low)),
 check(out.count(WARNING) == 2 and "raise 'Contact/Nitsche gamma0'" in out,
       "3D gamma0 20: one inertia warning per cycle, naming gamma0")
 # on 2 ranks MUMPS must factorise its root node itself (ScaLAPACK does not
-# count negative pivots): the same counts as on one rank
+# count negative pivots; whether it would take the root at this size is
+# not known here): the counts of one rank
 low2, _ = run(args, "3d_ldlt_gamma20_np2", prm_3d(20, True), np=2)
-check(negatives(low2) == negatives(low),
-      "3D gamma0 20: the same negative eigenvalues on 2 ranks (%s) as on 1 (%s)"
+# (the largest count over a Newton path, which round-off may change on an
+# indefinite problem: within 10 %; measured equal)
+check(all(a is not None and b is not None and abs(a - b) <= 0.1 * b
+          for a, b in zip(negatives(low2), negatives(low))),
+      "3D gamma0 20: the negative eigenvalues on 2 ranks (%s) as on 1 (%s)"
       % (negatives(low2), negatives(low)))
 
 # --- Kirchhoff, GSV, MUMPS
@@ -116,23 +122,25 @@ check(WARNING in out and "Stabilisation alpha" in out,
 paper_m = open(os.path.join(params, "paper_mindlin.prm")).read()
 
 
-def prm_m(gamma0, allow):
-    # (close to gamma0* the plate is very soft and Newton slow: the
-    # inertia, not convergence, is checked here)
+def prm_m(gamma0):
+    # (near gamma0* the plate is very soft, or not convex, and Newton slow
+    # or failing: the inertia, not convergence, is checked here)
     return edit(paper_m, [("Number of cycles", "2"), ("Nitsche gamma0", str(gamma0)),
-                          ("Maximum iterations",
-                           "40\n  set Allow non-convergence = %s" % allow)],
+                          ("Maximum iterations", "40\n  set Allow non-convergence = true")],
                 "paper_mindlin.prm")
 
 
-nu = 0.3
+nu = float(re.search(r"(?m)^\s*set Poisson ratio\s*=\s*(\S+)", paper_m).group(1))
 lam_over_E = nu / ((1 + nu) * (1 - 2 * nu))
-gamma_star = 3 * (1 - nu ** 2) * lam_over_E ** 2
-check(abs(gamma_star - 0.9087) < 1e-4, "Mindlin: gamma0* = %.5f" % gamma_star)
-_, out = run(args, "m_gamma0.87", prm_m(0.87, "false"), expect_status=2)
-check(WARNING in out and "Nitsche gamma0" in out,
-      "Mindlin gamma0 0.87 < gamma0*: inertia warning naming gamma0")
-above, out = run(args, "m_gamma0.95", prm_m(0.95, "true"))
+gamma_star = 3 * (1 - nu ** 2) * lam_over_E ** 2  # 0.9087 for nu = 0.3
+below, out = run(args, "m_gamma_below", prm_m(round(0.957 * gamma_star, 4)))
+check(all(n is not None and n > 0 for n in negatives(below)),
+      "Mindlin gamma0 %.4f < gamma0* = %.4f: negative eigenvalues (%s)"
+      % (0.957 * gamma_star, gamma_star, negatives(below)))
+check(WARNING in out and "raise 'Contact/Nitsche gamma0'" in out,
+      "Mindlin gamma0 below gamma0*: inertia warning naming gamma0")
+above, out = run(args, "m_gamma_above", prm_m(round(1.045 * gamma_star, 4)))
 check(negatives(above) == [0, 0] and WARNING not in out,
-      "Mindlin gamma0 0.95 > gamma0*: no negative eigenvalue (%s)" % negatives(above))
+      "Mindlin gamma0 %.4f > gamma0*: no negative eigenvalue (%s)"
+      % (1.045 * gamma_star, negatives(above)))
 finish()
