@@ -103,6 +103,14 @@ namespace NitscheContact
     double theta    = 1.;
     double gamma0   = 20.;
     double friction = 0.;
+    /// theta = 1 without friction: the Nitsche terms are the gradient of
+    /// a contact energy, so the Newton matrix is symmetric (the Hessian of
+    /// the total energy) and the driver's line search can use the energy
+    bool
+    has_energy() const
+    {
+      return theta == 1. && friction == 0.;
+    }
 
     // "Nonlinear solver"
     NonlinearScheme scheme                 = NonlinearScheme::newton;

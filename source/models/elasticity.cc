@@ -1001,7 +1001,7 @@ namespace NitscheContact
           residual,
           ReusedFactorization::change_of_newton_matrix(last_changed,
                                                        prm.friction > 0.),
-          prm.theta == 1. && prm.friction == 0.);
+          prm.has_energy());
       }
     else
       {
@@ -1069,7 +1069,7 @@ namespace NitscheContact
   double
   ElasticityModel::energy() const
   {
-    if (prm.theta != 1. || prm.friction > 0.)
+    if (!prm.has_energy())
       return std::numeric_limits<double>::quiet_NaN();
     // 1/2 a(U,U) by element integrals: no cancellation between the large
     // through-thickness stiffness entries, unlike U.AU.
@@ -1104,7 +1104,7 @@ namespace NitscheContact
   double
   ElasticityModel::energy_slope() const
   {
-    if (prm.theta != 1. || prm.friction > 0.)
+    if (!prm.has_energy())
       return std::numeric_limits<double>::quiet_NaN();
     // `residual` holds -R(U) on the unconstrained rows
     return -(residual * increment);

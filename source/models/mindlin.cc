@@ -696,7 +696,7 @@ namespace NitscheContact
     ContactCounts counts;
     const unsigned int n  = fe.n_dofs_per_cell();
     const unsigned int nq = contact_quadrature.size();
-    const bool with_energy = prm.theta == 1. && prm.friction == 0.;
+    const bool with_energy = prm.has_energy();
     double     contact_energy = 0.;
     std::vector<types::global_dof_index> dofs(n);
     Vector<double>     u(n), cell_residual(n), tmp(n);
@@ -1147,7 +1147,7 @@ namespace NitscheContact
       b,
       ReusedFactorization::change_of_newton_matrix(last_changed,
                                                    prm.friction > 0.),
-      prm.theta == 1. && prm.friction == 0.);
+      prm.has_energy());
     const double *xp = x.trilinos_vector()[0];
     std::copy(xp, xp + increment.size(), increment.begin());
     constraints.distribute(increment);
@@ -1188,7 +1188,7 @@ namespace NitscheContact
   double
   MindlinModel::energy_slope() const
   {
-    if (prm.theta != 1. || prm.friction > 0.)
+    if (!prm.has_energy())
       return std::numeric_limits<double>::quiet_NaN();
     // `residual` holds -R(U) (condensed), `increment` the last Newton correction
     return -(residual * increment);
@@ -1199,7 +1199,7 @@ namespace NitscheContact
   double
   MindlinModel::energy() const
   {
-    if (prm.theta != 1. || prm.friction > 0.)
+    if (!prm.has_energy())
       return std::numeric_limits<double>::quiet_NaN();
     // 1/2 a(U,U) from the strains at the Gauss points (no cancellation
     // between the large shear entries of the stiffness matrix, whose
