@@ -270,8 +270,9 @@ namespace NitscheContact
       prm.declare_entry(
         "Linear solver", "direct", Patterns::Selection("direct|amg"),
         "'direct': MUMPS through Trilinos/Amesos (robust, moderate sizes); "
-        "'amg': GMRES preconditioned by Trilinos ML AMG (large problems; "
-        "slow for very thin plates).");
+        "'amg': GMRES preconditioned by Trilinos ML AMG (large thick "
+        "bodies; it does not converge on thin plates such as the paper's, "
+        "which stops the run with that message).");
       prm.declare_entry("Krylov tolerance", "1e-10", Patterns::Double(0),
                         "Relative residual tolerance of the AMG-GMRES "
                         "solver.");
@@ -341,6 +342,10 @@ namespace NitscheContact
     contact_rule_name         = ph.get("Contact quadrature rule");
     ph.leave_subsection();
 
+    if (!(krylov_tolerance > 0. && krylov_tolerance < 1.))
+      bad_value("Elasticity/Krylov tolerance",
+                number_to_string(krylov_tolerance),
+                "must be in (0, 1)");
     if (contact_quadrature_points == 0)
       contact_quadrature_points = degree + 3;
     contact_face_quadrature =
@@ -1021,7 +1026,23 @@ namespace NitscheContact
         SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
           control,
           SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(200));
-        gmres.solve(system_matrix, increment, residual, amg);
+        try
+          {
+            gmres.solve(system_matrix, increment, residual, amg);
+          }
+        catch (const SolverControl::NoConvergence &e)
+          {
+            // GMRES is collective: every rank throws here
+            throw ConvergenceFailure(
+              "the AMG-preconditioned GMRES solver of the elasticity model "
+              "did not reach its relative tolerance " +
+              number_to_string(krylov_tolerance) +
+              " ('Elasticity/Krylov tolerance') in " +
+              std::to_string(e.last_step) + " iterations (residual " +
+              number_to_string(e.last_residual) +
+              "); algebraic multigrid does not handle thin plates (cells "
+              "much wider than thick), use 'Linear solver = direct'");
+          }
         its = control.last_step();
       }
     // A (numerically) singular Jacobian, e.g. when every contact point

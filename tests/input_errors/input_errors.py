@@ -78,6 +78,9 @@ CASES = [
      "set Model = mindlin\nsubsection Mindlin\n  set Linear solver = multigrid\n"
      "  set Krylov tolerance = 0\nend",
      ["Mindlin/Krylov tolerance", "'0'", "(0, 1)"]),
+    ("elasticity Krylov tolerance = 0",
+     "subsection Elasticity\n  set Linear solver = amg\n  set Krylov tolerance = 0\nend",
+     ["Elasticity/Krylov tolerance", "'0'", "(0, 1)"]),
     ("Mindlin multigrid with friction",
      "set Model = mindlin\nsubsection Contact\n  set Friction coefficient = 0.2\nend\n"
      "subsection Mindlin\n  set Linear solver = multigrid\nend",
