@@ -110,6 +110,13 @@ namespace NitscheContact
         const ContactCounts c = model.assemble(prm.scheme, true);
         t.assembly += timer.wall_time();
         records.back().counts = c;
+        if (!std::isfinite(c.residual_norm))
+          throw ConvergenceFailure(
+            "the residual is not a finite number (" +
+            number_to_string(c.residual_norm) + ") at nonlinear iteration " +
+            std::to_string(solves) + " of cycle " + std::to_string(cycle) +
+            ": the load, the obstacle or a parameter gives values that "
+            "overflow (check their magnitudes)");
         if (solves >= prm.max_iterations)
           break;
         // The bound of J(U_k) left by the last step, or J(U_k) itself
@@ -167,6 +174,13 @@ namespace NitscheContact
         const double du       = model.increment_energy_norm();
         const double u        = model.solution_energy_norm();
         const double relative = (u > 0.) ? du / u : (du == 0. ? 0. : 1.);
+        if (!std::isfinite(relative))
+          throw ConvergenceFailure(
+            "the Newton correction is not a finite number at nonlinear "
+            "iteration " + std::to_string(solves) + " of cycle " +
+            std::to_string(cycle) + " (|dU|_a = " + number_to_string(du) +
+            ", |U|_a = " + number_to_string(u) +
+            "): the parameters' magnitudes make the linear system overflow");
         double       step     = 1.;
         bool         nonmonotone_step = false; // full step by the window rule
         const double slope0   = model.energy_slope(); // at U_k along dU

@@ -188,5 +188,12 @@ main(int argc, char *argv[])
                 << std::endl;
       return 3;
     }
+  catch (...)
+    {
+      std::cerr << "nitsche-contact: internal error: an exception of unknown "
+                   "type"
+                << std::endl;
+      return 3;
+    }
   return 0;
 }

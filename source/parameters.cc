@@ -3,7 +3,10 @@
 
 #include <nitsche_contact/parameters.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <iostream>
 #include <map>
 #include <sstream>
 
@@ -31,6 +34,42 @@ namespace NitscheContact
                 t,
                 "allowed are 'clamped', 'simply supported', 'symmetry', "
                 "'free'");
+    }
+
+    std::string
+    prm_text_of_center(const Point<3> &c)
+    {
+      return number_to_string(c[0]) + ", " + number_to_string(c[1]) + ", " +
+             number_to_string(c[2]);
+    }
+
+    /// A parsed function of (x, y) must be finite on the plate: evaluate it
+    /// on a 101 x 101 grid of [0, Lx] x [0, Ly] (a NaN or an infinity, e.g.
+    /// sqrt or log outside their domain, would otherwise spread through the
+    /// solution or, in a gap, silently switch the obstacle off there).
+    void
+    check_finite_on_plate(const Function<2>  &f,
+                          const std::string &entry,
+                          const std::string &expression,
+                          const double       length_x,
+                          const double       length_y)
+    {
+      const unsigned int n = 100;
+      for (unsigned int i = 0; i <= n; ++i)
+        for (unsigned int j = 0; j <= n; ++j)
+          {
+            const Point<2> p(length_x * i / n, length_y * j / n);
+            const double   v = f.value(p);
+            if (!std::isfinite(v))
+              bad_value(entry,
+                        expression,
+                        "it is " + number_to_string(v) + " at (" +
+                          number_to_string(p[0]) + ", " +
+                          number_to_string(p[1]) +
+                          "); it must be a finite number on the whole "
+                          "plate [0, " + number_to_string(length_x) +
+                          "] x [0, " + number_to_string(length_y) + "]");
+          }
     }
 
     std::vector<double>
@@ -144,17 +183,42 @@ namespace NitscheContact
                        const unsigned int n_components,
                        const std::string &entry)
   {
+    // the entry that holds the constants: the load has its own, the exact
+    // solution and its derivatives share those of 'Reference solution'
+    const std::string constants_entry =
+      entry.rfind("Load/", 0) == 0 ? "Load/Function constants" :
+                                     "Reference solution/Function constants";
+    const std::string vars = dim == 2 ? "x,y" : "x,y,z";
     std::map<std::string, double> consts;
     consts["pi"] = numbers::PI;
     for (const auto &c : Utilities::split_string_list(constants, ','))
       {
         const auto kv = Utilities::split_string_list(c, '=');
         if (kv.size() != 2)
-          bad_value(entry + " constants",
+          bad_value(constants_entry,
                     constants,
                     "expected 'name=value' pairs separated by ','");
-        const auto v = parse_doubles(kv[1], entry + " constants", ',');
-        consts[kv[0]] = v[0];
+        const std::string &name = kv[0];
+        const bool identifier =
+          !name.empty() && (std::isalpha(static_cast<unsigned char>(name[0])) ||
+                            name[0] == '_') &&
+          std::all_of(name.begin(), name.end(), [](const char ch) {
+            return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_';
+          });
+        if (!identifier || name == "x" || name == "y" || name == "z" ||
+            name == "t")
+          bad_value(constants_entry,
+                    constants,
+                    "constant names must be identifiers (a letter or '_', "
+                    "then letters, digits or '_') other than the variables " +
+                      vars + " and t; '" + name + "' is not");
+        if (consts.count(name) > 0)
+          bad_value(constants_entry,
+                    constants,
+                    "the constant '" + name + "' is defined twice" +
+                      (name == "pi" ? " ('pi' is predefined)" : ""));
+        const auto v = parse_doubles(kv[1], constants_entry, ',');
+        consts[name] = v[0];
       }
     const auto exprs = Utilities::split_string_list(expression, ';');
     if (exprs.size() != n_components)
@@ -162,8 +226,12 @@ namespace NitscheContact
                 expression,
                 "expected " + std::to_string(n_components) +
                   " expression(s) separated by ';'");
-    const std::string vars = dim == 2 ? "x,y" : "x,y,z";
-    auto              f    = std::make_unique<FunctionParser<dim>>(n_components);
+    auto f = std::make_unique<FunctionParser<dim>>(n_components);
+    // deal.II prints muParser's diagnosis to std::cerr before it throws;
+    // keep it out of the terminal and put its first line into our message.
+    std::ostringstream parser_output;
+    std::streambuf    *cerr_buffer = std::cerr.rdbuf(parser_output.rdbuf());
+    bool               parsed      = true;
     try
       {
         f->initialize(vars, exprs, consts);
@@ -171,12 +239,29 @@ namespace NitscheContact
         Vector<double> v(n_components);
         f->vector_value(Point<dim>(), v);
       }
-    catch (const std::exception &e)
+    catch (...) // deal.II's exceptions, and muParser's own (not std::)
       {
+        parsed = false;
+      }
+    std::cerr.rdbuf(cerr_buffer);
+    if (!parsed)
+      {
+        std::string       why;
+        const std::string text = parser_output.str();
+        const auto        m    = text.find("Message: <");
+        if (m != std::string::npos)
+          {
+            const auto end = text.find('>', m);
+            why = ": " + text.substr(m + 10, end == std::string::npos ?
+                                                std::string::npos :
+                                                end - m - 10);
+          }
         bad_value(entry,
                   expression,
-                  "the expression could not be parsed (variables are " +
-                    vars + ", plus the declared constants)");
+                  "the expression could not be parsed" + why +
+                    " (variables are " + vars +
+                    ", plus pi and the constants of '" + constants_entry +
+                    "')");
       }
     return f;
   }
@@ -392,18 +477,22 @@ namespace NitscheContact
       prm.declare_entry("Print timings", "false", Patterns::Bool(),
                         "Print the wall-clock time of every phase at the "
                         "end of the run.");
-      prm.declare_entry("Probe points", "5, 5", Patterns::Anything(),
-                        "In-plane points 'x, y; x, y; ...' where the "
-                        "deflection (u3 on the mid-plane / w) is reported.");
-      prm.declare_entry("Profile line", "0, 5; 10, 5", Patterns::Anything(),
-                        "Start and end 'x0, y0; x1, y1' of the line along "
-                        "which the deflection is written to profile.csv.");
+      prm.declare_entry("Probe points", "centre", Patterns::Anything(),
+                        "In-plane points 'x, y; x, y; ...' on the plate where "
+                        "the deflection (u3 on the mid-plane / w) is "
+                        "reported; 'centre' stands for (Lx/2, Ly/2), empty "
+                        "for none.");
+      prm.declare_entry("Profile line", "centre line", Patterns::Anything(),
+                        "Start and end 'x0, y0; x1, y1' on the plate of the "
+                        "line along which the deflection is written to "
+                        "profile.csv; 'centre line' stands for (0, Ly/2) to "
+                        "(Lx, Ly/2).");
       prm.declare_entry("Profile points", "101", Patterns::Integer(2, 100000),
                         "Number of points along the profile line.");
       prm.declare_entry("Field grid points", "0", Patterns::Integer(0, 2000),
-                        "If > 0, the deflection of the last cycle is "
-                        "sampled on an n x n grid over the plate and "
-                        "written to field.csv (for plots).");
+                        "If > 0 (then at least 2), the deflection of the "
+                        "last cycle is sampled on an n x n grid over the "
+                        "plate and written to field.csv (for plots).");
     }
     prm.leave_subsection();
 
@@ -479,8 +568,10 @@ namespace NitscheContact
     {
       load_expression = prm.get("Transverse load");
       load_constants  = prm.get("Function constants");
-      make_parsed_function<2>(load_expression, load_constants, 1,
-                              "Load/Transverse load");
+      const auto f = make_parsed_function<2>(load_expression, load_constants,
+                                             1, "Load/Transverse load");
+      check_finite_on_plate(*f, "Load/Transverse load", load_expression,
+                            length_x, length_y);
     }
     prm.leave_subsection();
 
@@ -503,9 +594,16 @@ namespace NitscheContact
         bad_value("Obstacle/Sphere radius", number_to_string(sphere_radius),
                   "must be > 0");
       obstacle_expression = prm.get("Height");
+      if (!std::isfinite(obstacle_level))
+        bad_value("Obstacle/Level", number_to_string(obstacle_level),
+                  "must be a finite number");
       if (obstacle_type == "function")
-        make_parsed_function<2>(obstacle_expression, "", 1,
-                                "Obstacle/Height");
+        {
+          const auto f = make_parsed_function<2>(obstacle_expression, "", 1,
+                                                 "Obstacle/Height");
+          check_finite_on_plate(*f, "Obstacle/Height", obstacle_expression,
+                                length_x, length_y);
+        }
       obstacle_level_is_midplane =
         prm.get("Plate obstacle convention") == "mid-plane";
     }
@@ -559,10 +657,34 @@ namespace NitscheContact
         bad_value("Output/Directory", "", "must not be empty");
       output_format = prm.get("Format");
       print_timings = prm.get_bool("Print timings");
-      probes = parse_point_list(prm.get("Probe points"),
-                                "Output/Probe points");
-      const auto line = parse_point_list(prm.get("Profile line"),
-                                         "Output/Profile line");
+      // 'centre' / 'centre line' (the defaults) in plate coordinates
+      const Point<2> centre(length_x / 2, length_y / 2);
+      probes.clear();
+      for (const auto &item :
+           Utilities::split_string_list(prm.get("Probe points"), ';'))
+        if (item == "centre")
+          probes.push_back(centre);
+        else if (!item.empty())
+          {
+            std::vector<double> c;
+            try
+              {
+                c = parse_doubles(item, "Output/Probe points", ',');
+              }
+            catch (const InputError &)
+              {
+              }
+            if (c.size() != 2)
+              bad_value("Output/Probe points", prm.get("Probe points"),
+                        "expected points 'x, y' (or 'centre') separated by "
+                        "';'");
+            probes.emplace_back(c[0], c[1]);
+          }
+      const std::vector<Point<2>> line =
+        Utilities::trim(prm.get("Profile line")) == "centre line" ?
+          std::vector<Point<2>>{Point<2>(0., centre[1]),
+                                Point<2>(length_x, centre[1])} :
+          parse_point_list(prm.get("Profile line"), "Output/Profile line");
       if (line.size() != 2)
         bad_value("Output/Profile line", prm.get("Profile line"),
                   "expected two points 'x0, y0; x1, y1'");
@@ -570,6 +692,30 @@ namespace NitscheContact
       profile_end    = line[1];
       profile_points = prm.get_integer("Profile points");
       field_points   = prm.get_integer("Field grid points");
+      // the deflection is only defined on the plate (a point outside would
+      // be reported as NaN)
+      const double slack = 1e-10 * std::max(length_x, length_y);
+      const auto   on_plate = [&](const Point<2> &p) {
+        return p[0] >= -slack && p[0] <= length_x + slack && p[1] >= -slack &&
+               p[1] <= length_y + slack;
+      };
+      const std::string plate = "[0, " + number_to_string(length_x) +
+                                "] x [0, " + number_to_string(length_y) + "]";
+      for (const auto &p : probes)
+        if (!on_plate(p))
+          bad_value("Output/Probe points", prm.get("Probe points"),
+                    "the point (" + number_to_string(p[0]) + ", " +
+                      number_to_string(p[1]) + ") lies outside the plate " +
+                      plate);
+      for (const auto &p : line)
+        if (!on_plate(p))
+          bad_value("Output/Profile line", prm.get("Profile line"),
+                    "the point (" + number_to_string(p[0]) + ", " +
+                      number_to_string(p[1]) + ") lies outside the plate " +
+                      plate);
+      if (field_points == 1)
+        bad_value("Output/Field grid points", "1",
+                  "allowed are 0 (no field.csv) or at least 2");
     }
     prm.leave_subsection();
 
@@ -579,6 +725,53 @@ namespace NitscheContact
       exact_constants = prm.get("Function constants");
     }
     prm.leave_subsection();
+
+    // An obstacle above an edge whose deflection is held at 0 (clamped or
+    // simply supported) leaves the rigid-obstacle problem without a
+    // solution; the Nitsche terms would then return a meaningless
+    // equilibrium with a huge reaction. The contact surface of the
+    // undeformed body is its bottom face x3 = -t/2 (3D model, and the plate
+    // models with the bottom-face convention) or the mid-plane.
+    {
+      const double surface =
+        (model != "elasticity" && obstacle_level_is_midplane) ?
+          0. :
+          -0.5 * thickness;
+      const ObstacleSurface obstacle(*this);
+      const char *const     names[4] = {"x = 0", "x = Lx", "y = 0", "y = Ly"};
+      const unsigned int    n        = 100;
+      for (unsigned int e = 0; e < 4; ++e)
+        if (edges[e] == EdgeCondition::clamped ||
+            edges[e] == EdgeCondition::simply_supported)
+          for (unsigned int i = 0; i <= n; ++i)
+            {
+              const double   s = static_cast<double>(i) / n;
+              const Point<2> p  = e < 2 ? Point<2>(e == 0 ? 0. : length_x,
+                                                  s * length_y) :
+                                          Point<2>(s * length_x,
+                                                  e == 2 ? 0. : length_y);
+              const double   h  = obstacle.height(p);
+              if (h > surface + 1e-12 * thickness)
+                bad_value(obstacle_type == "plane" ? "Obstacle/Level" :
+                          obstacle_type == "sphere" ? "Obstacle/Sphere center" :
+                                                      "Obstacle/Height",
+                          obstacle_type == "plane" ?
+                            number_to_string(obstacle_level) :
+                          obstacle_type == "sphere" ?
+                            prm_text_of_center(sphere_center) :
+                            obstacle_expression,
+                          "the obstacle (height " + number_to_string(h) +
+                            " at (" + number_to_string(p[0]) + ", " +
+                            number_to_string(p[1]) +
+                            ")) lies above the contact surface " +
+                            number_to_string(surface) +
+                            " of the undeformed body on the supported edge " +
+                            names[e] +
+                            " (Geometry/Edge conditions): the contact "
+                            "problem has no solution; lower the obstacle or "
+                            "free that edge");
+            }
+    }
   }
 
   ObstacleSurface::ObstacleSurface(const CommonParameters &prm)

@@ -2,6 +2,7 @@
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 
+#include <nitsche_contact/parameters.h>
 #include <nitsche_contact/reused_factorization.h>
 
 #include <Amesos.h>
@@ -15,6 +16,7 @@
 #include <dmumps_c.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <limits>
 #include <string>
@@ -207,7 +209,10 @@ namespace NitscheContact
               return;
             }
           else
-            AssertThrow(false, ExcMessage(error() + " in the factorisation"));
+            throw ConvergenceFailure(error() + " in the factorisation of the Newton "
+                                     "matrix: the matrix has entries that are "
+                                     "not finite or too large, check the "
+                                     "magnitudes of the parameters");
         }
       negative   = id.infog[11];
       factorized = true;
@@ -353,9 +358,12 @@ namespace NitscheContact
         direct->NumericFactorization() != 0)
       {
         release();
-        AssertThrow(false,
-                    ExcMessage("the sparse direct solver " + settings.solver +
-                               " failed to factorise the Newton matrix"));
+        throw ConvergenceFailure(
+          "the sparse direct solver " + settings.solver +
+          " failed to factorise the Newton matrix: it is singular or has "
+          "entries that are not finite or too large (check the magnitudes "
+          "of the parameters; a body that is neither supported nor in "
+          "contact has a singular matrix)");
       }
   }
 
@@ -451,6 +459,34 @@ namespace NitscheContact
     else
       factorize(A);
     vmult(x, b);
+    check_linear_residual(A, x, b);
     return 0;
+  }
+
+
+
+  void
+  ReusedFactorization::check_linear_residual(
+    const TrilinosWrappers::SparseMatrix &A,
+    const TrilinosWrappers::MPI::Vector  &x,
+    const TrilinosWrappers::MPI::Vector  &b)
+  {
+    TrilinosWrappers::MPI::Vector r(b);
+    A.vmult(r, x);
+    r -= b;
+    const double rhs = b.l2_norm(), res = r.l2_norm();
+    if (!std::isfinite(rhs) || !std::isfinite(res))
+      throw ConvergenceFailure(
+        "the linearised contact problem has values that are not finite "
+        "numbers (overflow): check the magnitudes of the load and of the "
+        "parameters");
+    if (res > 1e-3 * rhs)
+      throw ConvergenceFailure(
+        "the linearised contact problem is singular (relative linear "
+        "residual " + number_to_string(rhs > 0. ? res / rhs : res) +
+        "): a rigid motion is not restrained. Either the body is not held "
+        "by its edge conditions and not in contact (start it in contact or "
+        "support an edge), or the whole contact surface slides because the "
+        "tangential load exceeds the friction limit");
   }
 } // namespace NitscheContact

@@ -189,6 +189,7 @@ namespace NitscheContact
                 number_to_string(prm.friction),
                 "the Kirchhoff model is frictionless; allowed is 0");
 
+    std::string exact_gradient_text, exact_hessian_text; // for messages
     param.enter_subsection("Kirchhoff");
     {
       formulation = param.get("Contact formulation") == "gsv" ?
@@ -212,6 +213,8 @@ namespace NitscheContact
       check_multigrid  = param.get_bool("Check multigrid");
       const std::string grad = dealii::Utilities::trim(param.get("Exact gradient"));
       const std::string hess = dealii::Utilities::trim(param.get("Exact Hessian"));
+      exact_gradient_text    = grad;
+      exact_hessian_text     = hess;
       if (!grad.empty())
         exact_gradient = make_parsed_function<2>(grad,
                                                  prm.exact_constants,
@@ -259,8 +262,9 @@ namespace NitscheContact
                                             1,
                                             "Reference solution/Exact solution");
     if ((exact_gradient || exact_hessian) && !exact_value)
-      bad_value("Kirchhoff/Exact gradient",
-                "...",
+      bad_value(exact_gradient ? "Kirchhoff/Exact gradient" :
+                                 "Kirchhoff/Exact Hessian",
+                exact_gradient ? exact_gradient_text : exact_hessian_text,
                 "an exact gradient or Hessian needs 'Reference "
                 "solution/Exact solution'");
 

@@ -81,6 +81,30 @@ CASES = [
     ("elasticity Krylov tolerance = 0",
      "subsection Elasticity\n  set Linear solver = amg\n  set Krylov tolerance = 0\nend",
      ["Elasticity/Krylov tolerance", "'0'", "(0, 1)"]),
+    ("load constant named like a variable",
+     "subsection Load\n  set Function constants = x=1\nend",
+     ["Load/Function constants", "x=1", "'x' is not"]),
+    ("load constant defined twice",
+     "subsection Load\n  set Function constants = q=1, q=2\nend",
+     ["Load/Function constants", "q=1, q=2", "'q' is defined twice"]),
+    ("load not finite on the plate",
+     "subsection Load\n  set Transverse load = sqrt(x-20)\nend",
+     ["Load/Transverse load", "sqrt(x-20)", "finite number", "[0, 10] x [0, 10]"]),
+    ("obstacle height not finite on part of the plate",
+     "subsection Obstacle\n  set Type = function\n  set Height = sqrt(25-(x-5)^2-(y-5)^2) - 6\nend",
+     ["Obstacle/Height", "sqrt(25-(x-5)^2-(y-5)^2) - 6", "at (0, 0)", "finite number"]),
+    ("obstacle height syntax error",
+     "subsection Obstacle\n  set Type = function\n  set Height = -1 +* x\nend",
+     ["Obstacle/Height", "-1 +* x", "could not be parsed"]),
+    ("probe point outside the plate",
+     "subsection Output\n  set Probe points = 5, 5; 15, 5\nend",
+     ["Output/Probe points", "5, 5; 15, 5", "(15, 5)", "outside the plate"]),
+    ("profile line leaves the plate",
+     "subsection Output\n  set Profile line = -5, 5; 15, 5\nend",
+     ["Output/Profile line", "-5, 5; 15, 5", "outside the plate"]),
+    ("field grid of one point",
+     "subsection Output\n  set Field grid points = 1\nend",
+     ["Output/Field grid points", "'1'", "at least 2"]),
     ("Mindlin multigrid with friction",
      "set Model = mindlin\nsubsection Contact\n  set Friction coefficient = 0.2\nend\n"
      "subsection Mindlin\n  set Linear solver = multigrid\nend",
@@ -136,6 +160,21 @@ for i, (case, body, expected) in enumerate(CASES):
           "%s: reported as an input error, not an internal error" % case)
     if case != "unwritable output directory":
         check(not os.path.exists(outdir), "%s: no output directory created" % case)
+
+# A plate neither supported by its edges nor in contact: the first Newton
+# matrix is singular (a rigid motion is free). Before, the direct solvers
+# returned a huge meaningless increment of zero energy and the run
+# "converged" with w ~ 1e14. It must stop as a convergence failure (exit 2).
+singular = os.path.join(args.workdir, "singular.prm")
+with open(singular, "w") as f:
+    f.write("set Model = kirchhoff\nsubsection Geometry\n  set Subdivisions = 4, 4\n"
+            "  set Edge conditions = free, free, free, free\nend\n"
+            "subsection Output\n  set Directory = %s\n  set Format = none\nend\n"
+            % os.path.join(args.workdir, "singular-out"))
+r = execute([singular])
+check(r.returncode == 2 and "singular" in r.stderr and "not held by its edge conditions" in r.stderr
+      and "internal error" not in r.stderr,
+      "unsupported Kirchhoff plate: exit %d (2), message: %s" % (r.returncode, r.stderr.strip()[:200]))
 
 r = execute([os.path.join(args.workdir, "does_not_exist.prm")])
 check(r.returncode == 1 and "does_not_exist.prm" in r.stderr,

@@ -32,7 +32,9 @@ def prm(degree, side, thickness, points, rule, gamma0=20, theta=1):
         text, n = re.subn(r"(?m)^(\s*set %s\s*=).*$" % re.escape(entry),
                           lambda m: m.group(1) + " " + value, text)
         check(n == 1, "paper_3d.prm: one entry '%s'" % entry)
-    return text
+    # the paper's probe points and profile line lie off the small block
+    return text + ("\nsubsection Output\n  set Probe points = centre\n"
+                   "  set Profile line = centre line\nend\n")
 
 
 def constant(summary):
