@@ -100,6 +100,8 @@ namespace NitscheContact
     const bool nonmonotone =
       prm.nonmonotone_window > 0 && prm.line_search && cycle > 0;
     std::vector<double> energies;
+    std::vector<double> relatives; // |dU|_a/|U|_a of each solve
+    stagnation.clear();
     // bound of J at the next iterate from the step that leads there (NaN:
     // none, measure J there)
     double next_bound = std::numeric_limits<double>::quiet_NaN();
@@ -358,6 +360,44 @@ namespace NitscheContact
                     << " |U|_a" << std::endl;
             break;
           }
+        // Stagnation (frictionless only): the same contact status at the
+        // last 6 iterates and no tenfold decrease of the correction over the
+        // last 5 solves. Without friction the linearised problem is fixed
+        // by the status, a step on a settled status is exact up to
+        // round-off (with friction the slip directions still move), so
+        // the correction is at the round-off floor of the problem (thin
+        // plates ~1e-7, or a solution that is zero): stop at once with
+        // that diagnosis instead of iterating up to 'Maximum iterations'.
+        relatives.push_back(relative);
+        const std::size_t window = 5;
+        if (prm.friction == 0. && relatives.size() > window &&
+            history.size() > window &&
+            std::all_of(history.end() - window - 1,
+                        history.end(),
+                        [&](const std::uint64_t h) {
+                          return h == history.back();
+                        }) &&
+            *std::min_element(relatives.end() - window, relatives.end()) >
+              0.1 * relatives[relatives.size() - window - 1])
+          {
+            stagnation =
+              "the nonlinear solver stagnated on cycle " +
+              std::to_string(cycle) + ": the contact status has not changed "
+              "in the last " + std::to_string(window) +
+              " iterations while the Newton correction stayed at "
+              "|dU|_a/|U|_a = " + number_to_string(relative) +
+              " above 'Nonlinear solver/Tolerance' = " +
+              number_to_string(prm.tolerance) + " (residual |R| = " +
+              number_to_string(c.residual_norm) +
+              "). This is the round-off floor of the problem (thin plates: "
+              "about 1e-7), or a solution that is zero; raise the tolerance "
+              "above it";
+            if (prm.print_iterations)
+              pcout << "    stagnated: the correction does not decrease on "
+                       "a settled contact status"
+                    << std::endl;
+            break;
+          }
       }
     return solves;
   }
@@ -402,19 +442,26 @@ namespace NitscheContact
         if (!converged)
           {
             if (prm.allow_non_convergence)
-              pcout << "  NOT CONVERGED: the " << scheme_name(prm.scheme)
-                    << " iteration did not converge in "
-                    << prm.max_iterations << " iterations on cycle " << cycle
+              pcout << "  NOT CONVERGED: "
+                    << (stagnation.empty() ?
+                          "the " + scheme_name(prm.scheme) +
+                            " iteration did not converge in " +
+                            std::to_string(prm.max_iterations) +
+                            " iterations on cycle " + std::to_string(cycle) :
+                          stagnation)
                     << "; continuing as requested" << std::endl;
             else
               {
                 write_summary(model);
                 throw ConvergenceFailure(
-                  "the nonlinear solver did not converge in " +
-                  std::to_string(prm.max_iterations) +
-                  " iterations on cycle " + std::to_string(cycle) +
-                  " (raise 'Nonlinear solver/Maximum iterations', or set "
-                  "'Allow non-convergence = true' to keep going)");
+                  !stagnation.empty() ?
+                    stagnation + " (or set 'Allow non-convergence = true' to "
+                                 "keep going)" :
+                    "the nonlinear solver did not converge in " +
+                      std::to_string(prm.max_iterations) +
+                      " iterations on cycle " + std::to_string(cycle) +
+                      " (raise 'Nonlinear solver/Maximum iterations', or set "
+                      "'Allow non-convergence = true' to keep going)");
               }
           }
 

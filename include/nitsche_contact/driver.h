@@ -54,6 +54,10 @@ namespace NitscheContact
 
     const CommonParameters    &prm;
     MPI_Comm                   comm;
+    /// Set by solve_nonlinear() when it stopped on stagnation (the status
+    /// settled but the correction does not decrease: the round-off floor);
+    /// empty otherwise.
+    std::string                stagnation;
     dealii::ConditionalOStream pcout;
 
     struct CycleRecord

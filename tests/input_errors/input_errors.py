@@ -176,6 +176,34 @@ check(r.returncode == 2 and "singular" in r.stderr and "not held by its edge con
       and "internal error" not in r.stderr,
       "unsupported Kirchhoff plate: exit %d (2), message: %s" % (r.returncode, r.stderr.strip()[:200]))
 
+# A tolerance below the round-off floor: once the contact status has
+# settled, a frictionless Newton step is exact up to round-off, so the
+# corrections stop decreasing (~5e-15 here). The driver must say so within
+# a few iterations, not run to 'Maximum iterations' (100) and report a
+# plain non-convergence; with 'Allow non-convergence' the run goes on.
+here = os.path.dirname(os.path.abspath(__file__))
+paper = open(os.path.join(here, "..", "..", "parameters", "paper_kirchhoff.prm")).read()
+for allow in (False, True):
+    tight = os.path.join(args.workdir, "tight%d.prm" % allow)
+    with open(tight, "w") as f:
+        f.write(paper + "\nsubsection Geometry\n  set Number of cycles = 1\nend\n"
+                "subsection Nonlinear solver\n  set Tolerance = 1e-16\n"
+                "  set Allow non-convergence = %s\nend\n"
+                "subsection Output\n  set Directory = %s\n  set Format = none\nend\n"
+                % ("true" if allow else "false", os.path.join(args.workdir, "tight%d-out" % allow)))
+    r = execute([tight])
+    iterations = [l for l in r.stdout.splitlines() if l.strip().startswith("iteration")]
+    if not allow:
+        check(r.returncode == 2 and "stagnated" in r.stderr and "round-off floor" in r.stderr
+              and "Nonlinear solver/Tolerance" in r.stderr,
+              "tolerance 1e-16: exit %d (2), message: %s" % (r.returncode, r.stderr.strip()[:160]))
+    else:
+        check(r.returncode == 0 and "NOT CONVERGED: the nonlinear solver stagnated" in r.stdout,
+              "tolerance 1e-16 with 'Allow non-convergence': exit %d (0), reported as stagnated"
+              % r.returncode)
+    check(0 < len(iterations) < 40,
+          "tolerance 1e-16: stopped after %d iterations (< 40 of the 100 allowed)" % len(iterations))
+
 r = execute([os.path.join(args.workdir, "does_not_exist.prm")])
 check(r.returncode == 1 and "does_not_exist.prm" in r.stderr,
       "missing .prm: exit %d, message: %s" % (r.returncode, r.stderr.strip()))
