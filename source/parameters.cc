@@ -538,7 +538,7 @@ namespace NitscheContact
         {
           if (d < 1 || d != std::floor(d) || d > 100000)
             bad_value("Geometry/Subdivisions", prm.get("Subdivisions"),
-                      "expected positive integers");
+                      "expected positive integers of at most 100000");
           subdivisions.push_back(static_cast<unsigned int>(d));
         }
       if (subdivisions.size() < 2 || subdivisions.size() > 3)
@@ -546,6 +546,11 @@ namespace NitscheContact
                   "expected 'nx, ny' or 'nx, ny, nz'");
       if (subdivisions.size() == 2)
         subdivisions.push_back(1);
+      // (the first mesh must fit in memory; later cycles refine it)
+      if (double(subdivisions[0]) * subdivisions[1] * subdivisions[2] > 1e7)
+        bad_value("Geometry/Subdivisions", prm.get("Subdivisions"),
+                  "the first mesh would have more than 1e7 cells; start "
+                  "coarser and refine with 'Number of cycles'");
       initial_refinement = prm.get_integer("Initial refinement");
       n_cycles           = prm.get_integer("Number of cycles");
     }
@@ -713,6 +718,9 @@ namespace NitscheContact
                     "the point (" + number_to_string(p[0]) + ", " +
                       number_to_string(p[1]) + ") lies outside the plate " +
                       plate);
+      if (line[0].distance(line[1]) == 0.)
+        bad_value("Output/Profile line", prm.get("Profile line"),
+                  "the two points must differ");
       if (field_points == 1)
         bad_value("Output/Field grid points", "1",
                   "allowed are 0 (no field.csv) or at least 2");

@@ -378,6 +378,11 @@ namespace NitscheContact
                            "' for parameter 'Elasticity/Refinement box': "
                            "expected two corners");
       }
+    if (local_refinement_steps > 0 && refinement_box.empty())
+      bad_value("Elasticity/Local refinement steps",
+                std::to_string(local_refinement_steps),
+                "local refinement needs 'Elasticity/Refinement box'; "
+                "allowed without a box is 0");
     if (!refine_through_thickness && !refinement_box.empty() &&
         local_refinement_steps > 0 && prm.n_cycles > 1)
       throw InputError(
