@@ -185,6 +185,7 @@ namespace NitscheContact
             "): the parameters' magnitudes make the linear system overflow");
         double       step     = 1.;
         bool         nonmonotone_step = false; // full step by the window rule
+        bool         backtracked = false; // a step < 1 of the backtracking
         const double slope0   = model.energy_slope(); // at U_k along dU
         // The model has an energy J (theta = 1, frictionless) exactly when
         // it returns a finite slope (model.h).
@@ -321,6 +322,7 @@ namespace NitscheContact
                 step = best_step;
                 model.apply_increment(step);
               }
+            backtracked = step < 1.;
           }
 
         if (prm.print_iterations)
@@ -368,10 +370,20 @@ namespace NitscheContact
         // the correction is at the round-off floor of the problem (thin
         // plates ~1e-7, or a solution that is zero): stop at once with
         // that diagnosis instead of iterating up to 'Maximum iterations'.
-        relatives.push_back(relative);
+        // Only full steps and exact line-search steps count: a step of the
+        // exact line search on a settled status is 1 up to round-off, while
+        // a backtracking step (no energy, Armijo on |R|) of 1/16 keeps the
+        // status and shrinks the correction slowly on a path that does
+        // converge (measured by a review: theta = 0, 'Damping after = 0').
+        relatives.push_back(backtracked ?
+                              std::numeric_limits<double>::quiet_NaN() :
+                              relative);
         const std::size_t window = 5;
         if (prm.friction == 0. && relatives.size() > window &&
             history.size() > window &&
+            std::none_of(relatives.end() - window - 1,
+                         relatives.end(),
+                         [](const double r) { return std::isnan(r); }) &&
             std::all_of(history.end() - window - 1,
                         history.end(),
                         [&](const std::uint64_t h) {

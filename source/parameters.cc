@@ -248,13 +248,17 @@ namespace NitscheContact
       {
         std::string       why;
         const std::string text = parser_output.str();
-        const auto        m    = text.find("Message: <");
-        if (m != std::string::npos)
+        // deal.II 9.4 prints "Message:  <...>"
+        const auto m = text.find("Message:");
+        const auto open =
+          m == std::string::npos ? std::string::npos : text.find('<', m);
+        if (open != std::string::npos)
           {
-            const auto end = text.find('>', m);
-            why = ": " + text.substr(m + 10, end == std::string::npos ?
-                                                std::string::npos :
-                                                end - m - 10);
+            const auto end = text.find('>', open);
+            why = ": " + text.substr(open + 1,
+                                     end == std::string::npos ?
+                                       std::string::npos :
+                                       end - open - 1);
           }
         bad_value(entry,
                   expression,
@@ -402,7 +406,9 @@ namespace NitscheContact
         "correction at the current iterate is below Tolerance times the "
         "energy norm of the solution; > 0. Thin 3D plates have a "
         "round-off floor near 1e-7 (condition number ~ (L/t)^4): use "
-        "1e-6 there.");
+        "1e-6 there. Without friction, a run whose contact status has "
+        "settled while the correction stops decreasing (Tolerance below "
+        "the round-off floor) stops early and says so.");
       prm.declare_entry("Maximum iterations", "50",
                         Patterns::Integer(1, 100000),
                         "Iteration limit per cycle.");
@@ -419,7 +425,11 @@ namespace NitscheContact
         "backtracking on the residual norm. false: always full steps.");
       prm.declare_entry("Allow non-convergence", "false", Patterns::Bool(),
                         "If false (default) a run whose nonlinear solver "
-                        "does not converge stops with exit status 2.");
+                        "does not converge (or stagnates) stops with exit "
+                        "status 2; if true it goes on with the next cycle. "
+                        "A singular Newton matrix, a failed linear solver "
+                        "and values that are not finite stop the run "
+                        "either way.");
       prm.declare_entry(
         "Load steps", "1", Patterns::Integer(1, 10000),
         "On the first cycle, apply the load in this many equal increments, "
@@ -546,12 +556,17 @@ namespace NitscheContact
                   "expected 'nx, ny' or 'nx, ny, nz'");
       if (subdivisions.size() == 2)
         subdivisions.push_back(1);
-      // (the first mesh must fit in memory; later cycles refine it)
-      if (double(subdivisions[0]) * subdivisions[1] * subdivisions[2] > 1e7)
-        bad_value("Geometry/Subdivisions", prm.get("Subdivisions"),
+      initial_refinement = prm.get_integer("Initial refinement");
+      // (the first mesh must fit in memory; later cycles refine it; a
+      // global refinement splits a cell into 4 (plates) or 8 (3D))
+      if (double(subdivisions[0]) * subdivisions[1] * subdivisions[2] *
+            std::pow(model == "elasticity" ? 8. : 4., initial_refinement) >
+          1e7)
+        bad_value("Geometry/Subdivisions",
+                  prm.get("Subdivisions") + "' with 'Initial refinement = " +
+                    std::to_string(initial_refinement),
                   "the first mesh would have more than 1e7 cells; start "
                   "coarser and refine with 'Number of cycles'");
-      initial_refinement = prm.get_integer("Initial refinement");
       n_cycles           = prm.get_integer("Number of cycles");
     }
     prm.leave_subsection();
@@ -751,9 +766,20 @@ namespace NitscheContact
       for (unsigned int e = 0; e < 4; ++e)
         if (edges[e] == EdgeCondition::clamped ||
             edges[e] == EdgeCondition::simply_supported)
-          for (unsigned int i = 0; i <= n; ++i)
+          // n + 1 samples, and (i = n + 1) the point of the edge nearest to
+          // a sphere's centre, where the sphere is highest
+          for (unsigned int i = 0; i <= n + 1; ++i)
             {
-              const double   s = static_cast<double>(i) / n;
+              double s = static_cast<double>(i) / n;
+              if (i == n + 1)
+                {
+                  if (obstacle_type != "sphere")
+                    break;
+                  s = std::clamp(e < 2 ? sphere_center[1] / length_y :
+                                         sphere_center[0] / length_x,
+                                 0.,
+                                 1.);
+                }
               const Point<2> p  = e < 2 ? Point<2>(e == 0 ? 0. : length_x,
                                                   s * length_y) :
                                           Point<2>(s * length_x,

@@ -445,6 +445,9 @@ namespace NitscheContact
     if (use_ldlt)
       {
         ldlt->factorize(A.trilinos_matrix());
+        // a singular matrix (checked first) has meaningless pivots
+        vmult(x, b);
+        check_linear_residual(A, x, b);
         if (ldlt->negative > 0 && max_negative <= 0 &&
             A.trilinos_matrix().Comm().MyPID() == 0)
           std::cout << "    warning: the Newton matrix has " << ldlt->negative
@@ -455,9 +458,9 @@ namespace NitscheContact
                        "solutions; "
                     << settings.inertia_remedy << std::endl;
         max_negative = std::max(max_negative, ldlt->negative);
+        return 0;
       }
-    else
-      factorize(A);
+    factorize(A);
     vmult(x, b);
     check_linear_residual(A, x, b);
     return 0;
@@ -469,7 +472,8 @@ namespace NitscheContact
   ReusedFactorization::check_linear_residual(
     const TrilinosWrappers::SparseMatrix &A,
     const TrilinosWrappers::MPI::Vector  &x,
-    const TrilinosWrappers::MPI::Vector  &b)
+    const TrilinosWrappers::MPI::Vector  &b,
+    const double                          limit)
   {
     TrilinosWrappers::MPI::Vector r(b);
     A.vmult(r, x);
@@ -480,13 +484,16 @@ namespace NitscheContact
         "the linearised contact problem has values that are not finite "
         "numbers (overflow): check the magnitudes of the load and of the "
         "parameters");
-    if (res > 1e-3 * rhs)
+    if (res > limit * rhs)
       throw ConvergenceFailure(
-        "the linearised contact problem is singular (relative linear "
-        "residual " + number_to_string(rhs > 0. ? res / rhs : res) +
-        "): a rigid motion is not restrained. Either the body is not held "
-        "by its edge conditions and not in contact (start it in contact or "
-        "support an edge), or the whole contact surface slides because the "
-        "tangential load exceeds the friction limit");
+        "the linearised contact problem is singular or too ill-conditioned "
+        "to solve (relative linear residual " +
+        number_to_string(rhs > 0. ? res / rhs : res) +
+        "): most often a rigid motion is not restrained. Either the body "
+        "is not held by its edge conditions and not in contact (start it "
+        "in contact or support an edge), or the whole contact surface "
+        "slides because the tangential load exceeds the friction limit; "
+        "otherwise the Nitsche parameter or the thinness make the matrix "
+        "too ill-conditioned");
   }
 } // namespace NitscheContact

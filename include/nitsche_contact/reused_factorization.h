@@ -116,14 +116,15 @@ namespace NitscheContact
           Change                                        change,
           bool                                          symmetric = false);
 
-    /// Throw ConvergenceFailure when x does not solve A x = b to 1e-3
+    /// Throw ConvergenceFailure when x does not solve A x = b to `limit`
     /// relative (a singular matrix: the direct solvers return a meaningless
     /// x without an error, which a driver would take for a small Newton
     /// correction). Called by solve() after every factorisation.
     static void
     check_linear_residual(const dealii::TrilinosWrappers::SparseMatrix &A,
                           const dealii::TrilinosWrappers::MPI::Vector  &x,
-                          const dealii::TrilinosWrappers::MPI::Vector  &b);
+                          const dealii::TrilinosWrappers::MPI::Vector  &b,
+                          double limit = 1e-3);
 
     /// Add "newton_negative_eigenvalues", the largest number of negative
     /// eigenvalues of the matrices factorised as L D L^T since clear()
