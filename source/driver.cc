@@ -141,6 +141,23 @@ namespace NitscheContact
             next_bound = std::numeric_limits<double>::quiet_NaN();
           }
 
+        // A residual at round-off on an unchanged contact status is a
+        // solution, also a zero one, where |dU|_a/|U|_a has no scale (a
+        // plate resting on the obstacle from the start: |R| ~ 1e-17).
+        {
+          const double f = model.load_norm();
+          if (solves > 0 && c.n_changed == 0 && std::isfinite(f) && f > 0. &&
+              c.residual_norm <= 1e-14 * f)
+            {
+              converged = true;
+              if (prm.print_iterations)
+                pcout << "    converged: |R| = " << c.residual_norm
+                      << " <= 1e-14 |F| on an unchanged contact status"
+                      << std::endl;
+              break;
+            }
+        }
+
         // A contact status seen two or more iterations ago coming back
         // means the full-step iteration cycles: switch to damped steps.
         if (!damping && prm.line_search && c.n_changed > 0)

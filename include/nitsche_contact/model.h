@@ -148,6 +148,19 @@ namespace NitscheContact
       return std::numeric_limits<double>::quiet_NaN();
     }
 
+    /// The l2 norm of the assembled load vector (the right-hand side
+    /// without contact terms) at the current load factor, the scale of the
+    /// residual norm of ContactCounts; NaN if the model does not offer it.
+    /// With it the driver also accepts an iterate whose contact status did
+    /// not change and whose residual is far below round-off (|R| <= 1e-14
+    /// of it; a nonzero solution's floor is ~1e-12): a zero solution,
+    /// which |dU|_a/|U|_a cannot judge.
+    virtual double
+    load_norm() const
+    {
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+
     /// Energy norms (bulk elastic energy, no contact terms) of the last
     /// increment dU and of the current iterate U.
     virtual double

@@ -15,6 +15,7 @@
 #include <nitsche_contact/models/kirchhoff.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -470,6 +471,30 @@ namespace NitscheContact
             }
         }
     previous_status.assign(cells.size() * nq, 255);
+
+    // |F| at load factor 1, the scale of the residual norm (load_norm())
+    {
+      Vector<double>         f(dof_handler.n_dofs());
+      std::array<double, 16> cell_load;
+      for (unsigned int c = 0; c < cells.size(); ++c)
+        {
+          for (unsigned int i = 0; i < 16; ++i)
+            {
+              cell_load[i] = 0.;
+              if (load_is_constant)
+                cell_load[i] = load_constant * kit.load_shape[i];
+              else
+                for (unsigned int q = 0; q < nq; ++q)
+                  cell_load[i] +=
+                    load_values[c * nq + q] * kit.JxW[q] * kit.values(i, q);
+            }
+          constraints.distribute_local_to_global(cell_load.begin(),
+                                                 cell_load.end(),
+                                                 cell_dofs.begin() + 16 * c,
+                                                 f);
+        }
+      unit_load_norm = f.l2_norm();
+    }
   }
 
 

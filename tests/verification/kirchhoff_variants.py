@@ -90,4 +90,25 @@ for theta in (0, 1, -1):
         check(dev[0] < 0.1 and 5 < dev[0] / dev[1] < 20,
               "Kirchhoff-Nitsche theta=%d: deviation ~ 1/gamma0 (ratio %.2f for gamma0 x10)"
               % (theta, dev[0] / dev[1]))
+
+# A plate resting on the obstacle from the start (paper's plate, obstacle at
+# the bottom face, Level = -t/2): the solution is w = 0 and the obstacle
+# carries the whole load, reaction q * area = 0.02 * 100 = 2 (equilibrium,
+# independent of the method). |dU|_a/|U|_a has no scale at a zero solution;
+# the residual test relative to the load vector must end the iteration.
+here = os.path.dirname(os.path.abspath(__file__))
+paper = open(os.path.join(here, "..", "..", "parameters", "paper_kirchhoff.prm")).read()
+for theta in (1, -1):
+    resting, _ = run(args, "resting%d" % theta, paper +
+                     "\nsubsection Geometry\n  set Number of cycles = 2\nend\n"
+                     "subsection Obstacle\n  set Level = -0.005\nend\n"
+                     "subsection Contact\n  set Nitsche theta = %d\nend\n" % theta)
+    for cyc in resting["cycles"]:
+        c = "resting plate, theta = %d, cycle %d: " % (theta, cyc["cycle"])
+        check(cyc["converged"] and cyc["nonlinear_iterations"] <= 5,
+              c + "converged in %d iterations" % cyc["nonlinear_iterations"])
+        close(cyc["contact_force"], 2.0, 1e-10, c + "reaction = q * area")
+        close(cyc["contact_area"], 100.0, 1e-12, c + "contact area = plate area")
+        check(max(abs(cyc["min_deflection"]), abs(cyc["max_deflection"])) < 1e-12,
+              c + "w = 0 (|w| <= %.1e)" % max(abs(cyc["min_deflection"]), abs(cyc["max_deflection"])))
 finish()

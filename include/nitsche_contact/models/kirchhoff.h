@@ -74,6 +74,11 @@ namespace NitscheContact
     double
     energy() const override;
     double
+    load_norm() const override
+    {
+      return std::abs(load_factor) * unit_load_norm;
+    }
+    double
     energy_slope() const override;
     bool
     prepare_line_search() override;
@@ -273,6 +278,7 @@ namespace NitscheContact
     void
     assemble_matrix(const std::vector<unsigned char> &status);
     dealii::Vector<double>                 rhs; ///< -R(U), condensed
+    double unit_load_norm = 0.; ///< |F| at load factor 1 (setup_dofs)
     std::vector<unsigned char>             previous_status;
     /// work arrays of assemble(): per cell the 16 entries of -R and the
     /// contact energy, per point the status just computed
