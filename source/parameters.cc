@@ -721,18 +721,17 @@ namespace NitscheContact
       };
       const std::string plate = "[0, " + number_to_string(length_x) +
                                 "] x [0, " + number_to_string(length_y) + "]";
-      for (const auto &p : probes)
-        if (!on_plate(p))
-          bad_value("Output/Probe points", prm.get("Probe points"),
-                    "the point (" + number_to_string(p[0]) + ", " +
-                      number_to_string(p[1]) + ") lies outside the plate " +
-                      plate);
-      for (const auto &p : line)
-        if (!on_plate(p))
-          bad_value("Output/Profile line", prm.get("Profile line"),
-                    "the point (" + number_to_string(p[0]) + ", " +
-                      number_to_string(p[1]) + ") lies outside the plate " +
-                      plate);
+      const auto check_on_plate = [&](const std::vector<Point<2>> &points,
+                                      const std::string           &entry) {
+        for (const auto &p : points)
+          if (!on_plate(p))
+            bad_value("Output/" + entry, prm.get(entry),
+                      "the point (" + number_to_string(p[0]) + ", " +
+                        number_to_string(p[1]) +
+                        ") lies outside the plate " + plate);
+      };
+      check_on_plate(probes, "Probe points");
+      check_on_plate(line, "Profile line");
       if (line[0].distance(line[1]) == 0.)
         bad_value("Output/Profile line", prm.get("Profile line"),
                   "the two points must differ");
