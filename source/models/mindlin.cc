@@ -874,6 +874,21 @@ namespace NitscheContact
                 }
             }
       }
+    // The BFS function with the same mixed derivative w_xy = c at every
+    // vertex and all other dofs zero is c H(x) H(y), H the C1 cubic with
+    // zero values and unit slopes at the vertices: on every cell H vanishes
+    // at both ends and at the midpoint, so the function and its gradient
+    // are zero at every MITC4 vertex (the BFS vertices and the midpoints).
+    // P maps it to zero, and without an edge that constrains w_xy (clamped,
+    // symmetry) the Galerkin coarse matrices are singular (the Krylov
+    // solver stalled with four simply supported edges). Constraining w_xy
+    // at one corner removes that kernel and nothing else from the coarse
+    // space: P of that dof is minus P of the sum of the others.
+    bool mixed_constrained = false;
+    for (std::size_t v = 0; v < constrained.size(); v += 4)
+      mixed_constrained = mixed_constrained || constrained[v + 3];
+    if (!mixed_constrained)
+      constrained[3] = true; // w_xy at the corner (0, 0)
     std::vector<types::global_dof_index> identity(constrained.size());
     for (std::size_t k = 0; k < identity.size(); ++k)
       identity[k] = k;
