@@ -260,7 +260,8 @@ namespace NitscheContact
               {
                 // phi' without assembling, where the model offers it
                 timer.restart();
-                const bool fast = model.prepare_line_search();
+                const bool fast =
+                  prm.fast_line_search && model.prepare_line_search();
                 t.assembly += timer.wall_time();
                 double a = 0., fa = slope0, b = 1., fb = s1;
                 for (unsigned int it = 0; it < 40; ++it)
@@ -292,14 +293,10 @@ namespace NitscheContact
                     else
                       b = step, fb = fs;
                   }
+                // (the next iteration assembles at the accepted step; a
+                // stop before it assembles there itself)
                 if (fast)
-                  {
-                    // the residual and status at the accepted step
-                    model.apply_increment(step);
-                    timer.restart();
-                    model.assemble(prm.scheme, false);
-                    t.assembly += timer.wall_time();
-                  }
+                  model.apply_increment(step);
               }
           }
         else if (relative > prm.tolerance && prm.line_search &&
@@ -425,6 +422,11 @@ namespace NitscheContact
               pcout << "    stagnated: the correction does not decrease on "
                        "a settled contact status"
                     << std::endl;
+            // residual and status at the last iterate (postprocess checks
+            // its equilibrium)
+            timer.restart();
+            records.back().counts = model.assemble(prm.scheme, false);
+            t.assembly += timer.wall_time();
             break;
           }
       }

@@ -447,6 +447,13 @@ namespace NitscheContact
         "Lucidi); otherwise the exact line search runs. 0: monotone (the "
         "full step only when the slope of J there is small). See "
         "doc/design.md.");
+      prm.declare_entry(
+        "Fast line search", "true", Patterns::Bool(),
+        "With the exact line search (see 'Line search'): evaluate the slope "
+        "of J at the trial steps from point values along the Newton step, "
+        "without assembling the residual there, where the model offers it "
+        "(elasticity and kirchhoff). false assembles the residual at every "
+        "trial step: the reference path, slower, for checking.");
       prm.declare_entry("Damping after", "100000", Patterns::Integer(0, 100000),
                         "With 'Line search', damped steps are also used "
                         "from this iteration on (0: always damped).");
@@ -665,6 +672,7 @@ namespace NitscheContact
       load_steps            = prm.get_integer("Load steps");
       damping_after         = prm.get_integer("Damping after");
       nonmonotone_window    = prm.get_integer("Nonmonotone window");
+      fast_line_search      = prm.get_bool("Fast line search");
       reuse_factorization   = prm.get_bool("Reuse factorization");
       symmetric_factorization = prm.get_bool("Symmetric factorization");
     }

@@ -122,6 +122,7 @@ namespace NitscheContact
     unsigned int    load_steps             = 1;
     unsigned int    damping_after          = 100000;
     unsigned int    nonmonotone_window     = 5;
+    bool            fast_line_search       = true;
     bool            reuse_factorization    = true;
     /// Nonlinear solver/Symmetric factorization: L D L^T (MUMPS) for
     /// symmetric Newton matrices

@@ -88,6 +88,71 @@ namespace NitscheContact
       return h;
     }
 
+    /// The linearisations (u_n, sigma_n, u_t, sigma_t) of the n shape
+    /// functions phi_i = N_i e_comp[i] at face quadrature point q.
+    void
+    shape_contact_data(const FEFaceValues<3>           &fvf,
+                       const unsigned int               q,
+                       const std::vector<unsigned int> &comp,
+                       const double                     lambda,
+                       const double                     mu,
+                       std::vector<ShapeContactData>   &shapes)
+    {
+      const Tensor<1, 3> nrm = fvf.normal_vector(q);
+      for (unsigned int i = 0; i < shapes.size(); ++i)
+        {
+          const unsigned int  c = comp[i];
+          const double        N = fvf.shape_value(i, q);
+          const Tensor<1, 3> &g = fvf.shape_grad(i, q);
+          ShapeContactData   &d = shapes[i];
+          // sigma(phi_i) n with phi_i = N e_c
+          Tensor<1, 3> sin = (lambda * g[c]) * nrm;
+          sin[c] += mu * (g * nrm);
+          sin += (mu * nrm[c]) * g;
+          d.sigma_n = nrm * sin;
+          d.sigma_t = sin - d.sigma_n * nrm;
+          d.u_n     = N * nrm[c];
+          Tensor<1, 3> phi;
+          phi[c] = N;
+          d.u_t  = phi - d.u_n * nrm;
+        }
+    }
+
+    /// Add `factor` times the theta-terms of one contact point, which are
+    /// the whole kernel contribution at an inactive point:
+    /// -(theta/r) (sigma_n(u) sigma_n(v) [+ sigma_t(u).sigma_t(v) with
+    /// friction]), to the cell matrix (if any) and, with the point's input
+    /// `in`, to the cell residual (if in != nullptr).
+    void
+    add_theta_terms(const double                         theta_over_r,
+                    const bool                           friction,
+                    const std::vector<ShapeContactData> &shapes,
+                    const double                         factor,
+                    const PointInput                    *in,
+                    FullMatrix<double>                  *cell_matrix,
+                    Vector<double>                      *cell_residual)
+    {
+      const unsigned int n = shapes.size();
+      const double       c = -theta_over_r * factor;
+      if (in != nullptr)
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            double v = in->sigma_n * shapes[i].sigma_n;
+            if (friction)
+              v += in->sigma_t * shapes[i].sigma_t;
+            (*cell_residual)(i) += c * v;
+          }
+      if (cell_matrix != nullptr)
+        for (unsigned int j = 0; j < n; ++j)
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              double v = shapes[j].sigma_n * shapes[i].sigma_n;
+              if (friction)
+                v += shapes[j].sigma_t * shapes[i].sigma_t;
+              (*cell_matrix)(i, j) += c * v;
+            }
+    }
+
     /// Graphical output of the contact face: Nitsche contact stress,
     /// status, gap and normal displacement, from the displacement field.
     class ContactPostprocessor : public DataPostprocessor<3>
@@ -606,6 +671,10 @@ namespace NitscheContact
                                                locally_relevant);
     bulk_matrix.reinit(locally_owned, locally_owned, dsp, comm);
     system_matrix.reinit(locally_owned, locally_owned, dsp, comm);
+    if (prm.theta != 0.)
+      theta_matrix.reinit(locally_owned, locally_owned, dsp, comm);
+    else
+      theta_matrix.clear();
 
     load.reinit(locally_owned, comm);
     residual.reinit(locally_owned, comm);
@@ -705,6 +774,35 @@ namespace NitscheContact
         }
     bulk_matrix.compress(VectorOperation::add);
     load.compress(VectorOperation::add);
+
+    if (prm.theta == 0.)
+      return;
+    // The theta-terms of every contact point (status independent).
+    theta_matrix.copy_from(bulk_matrix);
+    FEFaceValues<3> fvc(mapping, fe, contact_face_quadrature,
+                        update_values | update_gradients | update_JxW_values |
+                          update_normal_vectors);
+    std::vector<ShapeContactData> shapes(n);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == contact_id)
+            {
+              fvc.reinit(cell, f);
+              const double r = nitsche_r(cell, f);
+              cell_matrix    = 0.;
+              for (unsigned int q = 0; q < contact_face_quadrature.size(); ++q)
+                {
+                  shape_contact_data(fvc, q, comp, lambda, mu, shapes);
+                  add_theta_terms(prm.theta / r, prm.friction > 0., shapes,
+                                  fvc.JxW(q), nullptr, &cell_matrix, nullptr);
+                }
+              cell->get_dof_indices(dofs);
+              constraints.distribute_local_to_global(cell_matrix, dofs,
+                                                     theta_matrix);
+            }
+    theta_matrix.compress(VectorOperation::add);
   }
 
   void
@@ -870,11 +968,16 @@ namespace NitscheContact
                             const bool            with_matrix)
   {
     ghosted = solution;
+    // The constant matrix C holds the stiffness A and, for theta != 0, the
+    // theta-terms of every contact point, which are the whole contact
+    // terms of an inactive point: the kernel is visited at active points
+    // only, with its contribution minus those theta-terms.
+    const TrilinosWrappers::SparseMatrix &C = constant_matrix();
     if (with_matrix)
-      system_matrix.copy_from(bulk_matrix);
-    // residual <- F - A U on unconstrained rows (the condensed A applied
+      system_matrix.copy_from(C);
+    // residual <- F - C U on unconstrained rows (the condensed C applied
     // to a U that satisfies the constraints is the condensed product).
-    bulk_matrix.vmult(residual, solution);
+    C.vmult(residual, solution);
     residual.sadd(-1., load_factor, load);
 
     const Quadrature<2> &face_quadrature = contact_face_quadrature;
@@ -909,8 +1012,7 @@ namespace NitscheContact
               fvf.get_function_values(ghosted, u_values);
               fvf.get_function_gradients(ghosted, u_grads);
               const double r = nitsche_r(cell, f);
-              cell_matrix    = 0.;
-              cell_residual  = 0.;
+              bool         any_active = false;
               for (unsigned int q = 0; q < face_quadrature.size(); ++q)
                 {
                   const Tensor<1, 3> nrm = fvf.normal_vector(q);
@@ -920,28 +1022,26 @@ namespace NitscheContact
                   const PointState st = evaluate_contact_point(in, scheme);
                   status.push_back(static_cast<unsigned char>(st.status));
                   contact_energy += contact_energy_density(in, st) * fvf.JxW(q);
-
-                  for (unsigned int i = 0; i < n; ++i)
+                  if (st.status == PointStatus::inactive)
+                    continue; // all in C
+                  if (!any_active)
                     {
-                      const unsigned int  c = comp[i];
-                      const double        N = fvf.shape_value(i, q);
-                      const Tensor<1, 3>  g = fvf.shape_grad(i, q);
-                      ShapeContactData   &d = shapes[i];
-                      // sigma(phi_i) n with phi_i = N e_c
-                      Tensor<1, 3> sin = (lambda * g[c]) * nrm;
-                      sin[c] += mu * (g * nrm);
-                      sin += (mu * nrm[c]) * g;
-                      d.sigma_n = nrm * sin;
-                      d.sigma_t = sin - d.sigma_n * nrm;
-                      d.u_n     = N * nrm[c];
-                      Tensor<1, 3> phi;
-                      phi[c] = N;
-                      d.u_t  = phi - d.u_n * nrm;
+                      any_active    = true;
+                      cell_matrix   = 0.;
+                      cell_residual = 0.;
                     }
+                  shape_contact_data(fvf, q, comp, lambda, mu, shapes);
                   add_point_contribution(in, st, shapes, fvf.JxW(q),
                                          with_matrix ? &cell_matrix : nullptr,
                                          cell_residual);
+                  if (prm.theta != 0.)
+                    add_theta_terms(prm.theta / r, prm.friction > 0., shapes,
+                                    -fvf.JxW(q), &in,
+                                    with_matrix ? &cell_matrix : nullptr,
+                                    &cell_residual);
                 }
+              if (!any_active)
+                continue;
               cell->get_dof_indices(dofs);
               cell_residual *= -1.; // we assemble -R
               if (with_matrix)
@@ -1127,6 +1227,96 @@ namespace NitscheContact
       return std::numeric_limits<double>::quiet_NaN();
     // `residual` holds -R(U) on the unconstrained rows
     return -(residual * increment);
+  }
+
+  bool
+  ElasticityModel::prepare_line_search()
+  {
+    if (!prm.has_energy())
+      return false;
+    // Along U(t) = U_base + t dU the residual tested with dU is
+    //   phi'(t) = dU.(C U_base - F) + t dU.C dU
+    //             - sum over active points of w min(s_n(t), 0) m,
+    // with C the constant matrix (stiffness and theta-terms), s_n(t) =
+    // s0 + t ds affine (ds = sigma_n(dU) - r u_n(dU)) and m = u_n(dU) -
+    // (theta/r) sigma_n(dU) (the kernel's residual minus its theta-terms,
+    // frictionless). Points active at t = 0 and t = 1 contribute affine
+    // terms, summed into two numbers; the others are kept.
+    const TrilinosWrappers::SparseMatrix &C = constant_matrix();
+    TrilinosWrappers::MPI::Vector         product(locally_owned, comm);
+    C.vmult(product, base);
+    double constant = increment * product - load_factor * (increment * load);
+    C.vmult(product, increment);
+    double linear = increment * product;
+
+    TrilinosWrappers::MPI::Vector u0(locally_owned, locally_relevant, comm),
+      du(locally_owned, locally_relevant, comm);
+    u0 = base;
+    du = increment;
+    FEFaceValues<3> fvf(mapping, fe, contact_face_quadrature,
+                        update_values | update_gradients |
+                          update_quadrature_points | update_JxW_values |
+                          update_normal_vectors);
+    const unsigned int nq = contact_face_quadrature.size();
+    std::vector<Vector<double>> u0_values(nq, Vector<double>(3)),
+      du_values(nq, Vector<double>(3));
+    std::vector<std::vector<Tensor<1, 3>>> u0_grads(
+      nq, std::vector<Tensor<1, 3>>(3)),
+      du_grads(nq, std::vector<Tensor<1, 3>>(3));
+    double local_constant = 0., local_linear = 0.;
+    line_switching.clear();
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == contact_id)
+            {
+              fvf.reinit(cell, f);
+              fvf.get_function_values(u0, u0_values);
+              fvf.get_function_gradients(u0, u0_grads);
+              fvf.get_function_values(du, du_values);
+              fvf.get_function_gradients(du, du_grads);
+              const double r = nitsche_r(cell, f);
+              for (unsigned int q = 0; q < nq; ++q)
+                {
+                  const Tensor<1, 3> nrm = fvf.normal_vector(q);
+                  const Point<3>    &x   = fvf.quadrature_point(q);
+                  const PointInput   in0 = contact_input(
+                    u0_values[q], u0_grads[q], nrm, x, r, prm, obstacle);
+                  const PointInput ind = contact_input(
+                    du_values[q], du_grads[q], nrm, x, r, prm, obstacle);
+                  const double s0 = in0.sigma_n - r * (in0.u_n - in0.gap);
+                  const double ds = ind.sigma_n - r * ind.u_n;
+                  const double coefficient =
+                    fvf.JxW(q) *
+                    (ind.u_n - (prm.theta / r) * ind.sigma_n);
+                  const bool active0 = (s0 <= 0.), active1 = (s0 + ds <= 0.);
+                  if (active0 && active1)
+                    {
+                      local_constant -= coefficient * s0;
+                      local_linear -= coefficient * ds;
+                    }
+                  else if (active0 != active1)
+                    {
+                      line_switching.push_back(s0);
+                      line_switching.push_back(ds);
+                      line_switching.push_back(coefficient);
+                    }
+                }
+            }
+    line_constant = constant + Utilities::MPI::sum(local_constant, comm);
+    line_linear   = linear + Utilities::MPI::sum(local_linear, comm);
+    return true;
+  }
+
+  double
+  ElasticityModel::line_slope(const double t) const
+  {
+    double local = 0.;
+    for (std::size_t k = 0; k < line_switching.size(); k += 3)
+      local -= line_switching[k + 2] *
+               std::min(line_switching[k] + t * line_switching[k + 1], 0.);
+    return line_constant + t * line_linear + Utilities::MPI::sum(local, comm);
   }
 
   double

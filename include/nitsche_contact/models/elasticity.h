@@ -60,6 +60,10 @@ namespace NitscheContact
     energy() const override;
     double
     energy_slope() const override;
+    bool
+    prepare_line_search() override;
+    double
+    line_slope(double t) const override;
     double
     increment_energy_norm() const override;
     double
@@ -90,6 +94,8 @@ namespace NitscheContact
     refine_in_plane(unsigned int cycle);
     void
     setup_dofs();
+    /// Elastic stiffness and load; for theta != 0 also the constant
+    /// matrix (the stiffness plus the theta-terms of every contact point).
     void
     assemble_bulk();
     double
@@ -132,6 +138,11 @@ namespace NitscheContact
     dealii::AffineConstraints<double>               constraints;
 
     dealii::TrilinosWrappers::SparseMatrix bulk_matrix;   // elastic stiffness
+    /// For theta != 0: bulk_matrix plus the theta-terms -(theta/r)
+    /// (sigma_n(u) sigma_n(v) [+ sigma_t(u).sigma_t(v) with friction]) of
+    /// every contact point, which are the whole contact terms of an inactive
+    /// point; assemble() then visits the kernel only at active points.
+    dealii::TrilinosWrappers::SparseMatrix theta_matrix;
     dealii::TrilinosWrappers::SparseMatrix system_matrix; // bulk + contact
     dealii::TrilinosWrappers::MPI::Vector  load;          // condensed load
     dealii::TrilinosWrappers::MPI::Vector  residual;      // -R(U)
@@ -144,6 +155,20 @@ namespace NitscheContact
     std::unique_ptr<dealii::FunctionParser<2>>     load_function;
     std::unique_ptr<dealii::FunctionParser<2>>     traction_function;
     std::unique_ptr<dealii::FunctionParser<3>>     exact_solution;
+
+    /// bulk_matrix, or theta_matrix for theta != 0
+    const dealii::TrilinosWrappers::SparseMatrix &
+    constant_matrix() const
+    {
+      return prm.theta != 0. ? theta_matrix : bulk_matrix;
+    }
+
+    /// prepare_line_search(): phi'(t) = line_constant + t line_linear +
+    /// sum over this rank's points whose contact state changes in (0, 1)
+    /// of -coefficient * min(s0 + t ds, 0), stored as (s0, ds, coefficient)
+    /// (line_constant and line_linear are already summed over the ranks)
+    double              line_constant = 0., line_linear = 0.;
+    std::vector<double> line_switching;
 
     std::vector<unsigned char> previous_status;
     double                     load_factor = 1.;

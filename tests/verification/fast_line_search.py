@@ -1,0 +1,74 @@
+"""The exact line search's fast path ('Nonlinear solver/Fast line search',
+doc/design.md) against the assembled residual (the option set to false),
+the independent second method: phi'(t) = R(U + t dU).dU from point values
+along the step must equal the slope of the residual assembled at U + t dU.
+ - 3D elasticity, the paper's test (Q2, 8 x 8 x 1 then 16 x 16 x 1),
+   Gauss-Lobatto contact points with gamma0 = 60 (coercive,
+   nitsche_trace_constant), on 1 rank with and without the fast path and on
+   2 ranks with it (its sums over the ranks);
+ - Kirchhoff GSV, the paper's test from 16^2 to 32^2 cells.
+Checks: the cold start's first line-search step (an exact line search from
+the same iterate in every run: the same phi' gives the same secant
+iterates) is the same to the 4 printed decimals, and so is every log line
+up to it; per cycle both runs converge, the contact force and the probe
+deflections agree to 1e-5 (3D, Newton tolerance 1e-6) or 1e-8 (Kirchhoff),
+the active sets to 0.5 % (compare_cycle)."""
+import os, re, sys
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from common import parse_args, run, check, compare_cycle, finish
+
+args = parse_args()
+here = os.path.dirname(os.path.abspath(__file__))
+parameters = os.path.join(here, "..", "..", "parameters")
+
+
+def prm_from(name, replacements, fast):
+    text = open(os.path.join(parameters, name)).read()
+    for pattern, value in replacements:
+        text, n = re.subn(r"(?m)^(\s*set %s\s*=).*$" % re.escape(pattern),
+                          lambda m: m.group(1) + " " + value, text)
+        check(n == 1, "%s: one entry '%s'" % (name, pattern))
+    return text + ("\nsubsection Nonlinear solver\n  set Fast line search = %s\n"
+                   "  set Print iterations = true\nend\n" % ("true" if fast else "false"))
+
+
+def iteration_lines(out):
+    """The iteration lines of the first cycle, up to and including the first
+    one with a line-search step < 1, and that step."""
+    lines = []
+    first = re.split(r"(?m)^Cycle \d+:", out)[1]
+    for line in first.splitlines():
+        if re.match(r"\s*iteration\s+\d+:", line):
+            lines.append(line.strip())
+            m = re.search(r"step (\d\.\d+)$", line)
+            if m:
+                return lines, m.group(1)
+    return lines, None
+
+
+elasticity_changes = [("Number of cycles", "2"), ("Subdivisions", "8, 8, 1"),
+                      ("Tolerance", "1e-6"),
+                      ("Refine through thickness", "false\n  set Contact quadrature rule = lobatto"),
+                      ("Nitsche gamma0", "60")]
+kirchhoff_changes = [("Number of cycles", "2")]
+
+cases = [("elasticity", "paper_3d.prm", elasticity_changes, 1e-5, [1, 2]),
+         ("kirchhoff", "paper_kirchhoff.prm", kirchhoff_changes, 1e-8, [1])]
+
+for tag, prm, changes, rtol, ranks in cases:
+    ref, out_ref = run(args, tag + "_assembled", prm_from(prm, changes, False))
+    lines_ref, step_ref = iteration_lines(out_ref)
+    check(step_ref is not None,
+          "%s: the cold start takes a line-search step (iteration %d, step %s)"
+          % (tag, len(lines_ref), step_ref))
+    for np in ranks:
+        name = "%s_fast_np%d" % (tag, np)
+        new, out_new = run(args, name, prm_from(prm, changes, True), np=np)
+        lines_new, step_new = iteration_lines(out_new)
+        check(lines_new == lines_ref,
+              "%s: the iterations up to the first line-search step are the "
+              "same (step %s, assembled %s)" % (name, step_new, step_ref))
+        for cycle, (cr, cn) in enumerate(zip(ref["cycles"], new["cycles"])):
+            compare_cycle("%s cycle %d" % (name, cycle), cr, cn, rtol,
+                          ("assembled", "fast"))
+finish()
