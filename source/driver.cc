@@ -92,6 +92,11 @@ namespace NitscheContact
     std::vector<std::uint64_t> history;
     bool         damping = prm.line_search && prm.damping_after == 0;
     unsigned int solves  = 0;
+    // Without an energy: the smallest residual norm so far and the number
+    // of full steps since it was reached (see 'Damping after').
+    double       best_residual = std::numeric_limits<double>::infinity();
+    unsigned int since_best    = 0;
+    bool         energy_known  = false, without_energy = false;
     converged            = false;
     // Upper bounds of J at the iterates of this solve, one per iterate,
     // for the non-monotone acceptance of full Newton steps below. Only on
@@ -179,6 +184,28 @@ namespace NitscheContact
                       << std::endl;
               }
           }
+        // Without an energy the full steps can also wander without ever
+        // repeating a status (Coulomb friction: measured on the paper's
+        // Mindlin test with F = 0.2, whose 16^2 cycle went on for 400
+        // iterations): switch to damped steps once the residual norm has
+        // not reached a new minimum in 'Damping after no decrease' steps
+        // (off by default: the damped steps are slow where full steps
+        // would finish).
+        if (c.residual_norm < best_residual)
+          {
+            best_residual = c.residual_norm;
+            since_best    = 0;
+          }
+        else
+          ++since_best;
+        if (!damping && prm.line_search && energy_known && without_energy &&
+            prm.damping_without_decrease > 0 &&
+            since_best >= prm.damping_without_decrease)
+          {
+            damping = true;
+            pcout << "    no new minimum of |R| in the last " << since_best
+                  << " full steps: switching to damped steps" << std::endl;
+          }
         history.push_back(c.hash);
 
         timer.restart();
@@ -207,6 +234,8 @@ namespace NitscheContact
         // The model has an energy J (theta = 1, frictionless) exactly when
         // it returns a finite slope (model.h).
         const bool has_energy = std::isfinite(slope0);
+        energy_known          = true;
+        without_energy        = !has_energy;
         if (relative > prm.tolerance && prm.line_search && has_energy &&
             slope0 < 0.)
           {
@@ -515,7 +544,9 @@ namespace NitscheContact
                   DataOutBase::write_pvd_record(pvd, series.second);
                 }
           }
-        write_profile(model, cycle);
+            write_profile(model, cycle);
+        if (prm.contact_points)
+          write_contact_points(model, cycle);
         times.output = timer.wall_time();
 
         const CycleResults &r = records.back().results;
@@ -592,6 +623,23 @@ namespace NitscheContact
           ".csv",
         prm.output_directory + "/profile.csv",
         std::filesystem::copy_options::overwrite_existing);
+  }
+
+  void
+  ContactDriver::write_contact_points(const ContactModel &model,
+                                      const unsigned int  cycle) const
+  {
+    const std::vector<ContactPointRecord> points = model.contact_points();
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      return;
+    std::ofstream f(prm.output_directory + "/contact_points-" +
+                    Utilities::int_to_string(cycle, 2) + ".csv");
+    f << "x,y,cell_x,cell_y,weight,status,s_n,sigma_n,gap,pressure\n"
+      << std::setprecision(12);
+    for (const ContactPointRecord &p : points)
+      f << p.x << ',' << p.y << ',' << p.cell_x << ',' << p.cell_y << ','
+        << p.weight << ',' << p.status << ',' << p.s_n << ',' << p.sigma_n
+        << ',' << p.gap << ',' << p.pressure << '\n';
   }
 
   void

@@ -46,6 +46,10 @@ namespace NitscheContact
     void
     write_profile(const ContactModel &model, unsigned int cycle) const;
 
+    /// contact_points-NN.csv ('Output/Contact points')
+    void
+    write_contact_points(const ContactModel &model, unsigned int cycle) const;
+
     void
     write_summary(const ContactModel &model) const;
 

@@ -40,6 +40,54 @@ namespace NitscheContact
     double        residual_norm = 0.; ///< l2 norm of the residual vector
   };
 
+  /// One contact quadrature point at the current iterate ('Output/Contact
+  /// points'): its position, the centre of the cell (3D: of the face) it
+  /// belongs to (points on shared vertices and edges appear once per cell),
+  /// its weight, status and the kernel quantities.
+  struct ContactPointRecord
+  {
+    double x = 0., y = 0.;           ///< in-plane position
+    double cell_x = 0., cell_y = 0.; ///< centre of its cell / face
+    double weight   = 0.;            ///< quadrature weight JxW
+    int    status   = 0;             ///< 0 inactive, 1 stick, 2 slip
+    double s_n      = 0.;            ///< sigma_n - r (u_n - g)
+    double sigma_n  = 0.;            ///< normal stress of the formulation
+    double gap      = 0.;            ///< g - u_n (> 0: separated)
+    double pressure = 0.;            ///< -Lambda_n >= 0
+
+    /// for Utilities::MPI::gather
+    template <class Archive>
+    void
+    serialize(Archive &ar, const unsigned int /*version*/)
+    {
+      ar &x &y &cell_x &cell_y &weight &status &s_n &sigma_n &gap &pressure;
+    }
+  };
+
+  /// The record of a point from the kernel's input and state there.
+  inline ContactPointRecord
+  make_contact_point_record(const PointInput  &in,
+                            const PointState  &st,
+                            const double       x,
+                            const double       y,
+                            const double       cell_x,
+                            const double       cell_y,
+                            const double       weight)
+  {
+    ContactPointRecord p;
+    p.x        = x;
+    p.y        = y;
+    p.cell_x   = cell_x;
+    p.cell_y   = cell_y;
+    p.weight   = weight;
+    p.status   = static_cast<int>(st.status);
+    p.s_n      = st.s_n;
+    p.sigma_n  = in.sigma_n;
+    p.gap      = in.gap - in.u_n;
+    p.pressure = -st.lambda_n;
+    return p;
+  }
+
   /// Quantities the driver reports for a converged cycle.
   struct CycleResults
   {
@@ -171,6 +219,11 @@ namespace NitscheContact
     /// Contact area and force, extreme deflections, probe values, errors.
     virtual CycleResults
     postprocess(const std::vector<dealii::Point<2>> &probes) = 0;
+
+    /// Every contact quadrature point at the current iterate, all of them
+    /// on MPI rank 0 (empty on the others). Called on all ranks.
+    virtual std::vector<ContactPointRecord>
+    contact_points() const = 0;
 
     /// Deflection (u3 on the mid-plane / w) at in-plane points; NaN where a
     /// point lies outside the plate. Called on all ranks, result on all.

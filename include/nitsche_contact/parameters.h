@@ -123,6 +123,7 @@ namespace NitscheContact
     unsigned int    damping_after          = 100000;
     unsigned int    nonmonotone_window     = 5;
     bool            fast_line_search       = true;
+    unsigned int    damping_without_decrease = 0;
     bool            reuse_factorization    = true;
     /// Nonlinear solver/Symmetric factorization: L D L^T (MUMPS) for
     /// symmetric Newton matrices
@@ -136,6 +137,7 @@ namespace NitscheContact
     dealii::Point<2>                profile_start, profile_end;
     unsigned int                    profile_points = 101;
     unsigned int                    field_points   = 0;
+    bool                            contact_points = false;
 
     // "Reference solution"
     std::string exact_solution;  // components separated by ';' (empty: none)

@@ -1244,10 +1244,21 @@ namespace NitscheContact
     // terms, summed into two numbers; the others are kept.
     const TrilinosWrappers::SparseMatrix &C = constant_matrix();
     TrilinosWrappers::MPI::Vector         product(locally_owned, comm);
-    C.vmult(product, base);
-    double constant = increment * product - load_factor * (increment * load);
-    C.vmult(product, increment);
-    double linear = increment * product;
+    // C v - f F without the constrained rows, as the residual of
+    // assemble() (with hanging nodes U and dU are nonzero there and C has
+    // only a diagonal entry)
+    const auto apply_C = [&](const TrilinosWrappers::MPI::Vector &v,
+                             const double                          f) {
+      C.vmult(product, v);
+      product.add(-f, load);
+      for (const auto &line : constraints.get_lines())
+        if (locally_owned.is_element(line.index))
+          product(line.index) = 0.;
+      product.compress(VectorOperation::insert);
+      return increment * product;
+    };
+    const double constant = apply_C(base, load_factor);
+    const double linear   = apply_C(increment, 0.);
 
     TrilinosWrappers::MPI::Vector u0(locally_owned, locally_relevant, comm),
       du(locally_owned, locally_relevant, comm);
@@ -1365,6 +1376,48 @@ namespace NitscheContact
       value[p] = owner[p] > 0 ? value[p] / owner[p] :
                                 std::numeric_limits<double>::quiet_NaN();
     return value;
+  }
+
+  std::vector<ContactPointRecord>
+  ElasticityModel::contact_points() const
+  {
+    FEFaceValues<3> fvf(mapping, fe, contact_face_quadrature,
+                        update_values | update_gradients |
+                          update_quadrature_points | update_JxW_values |
+                          update_normal_vectors);
+    const unsigned int nq = contact_face_quadrature.size();
+    std::vector<Vector<double>> u_values(nq, Vector<double>(3));
+    std::vector<std::vector<Tensor<1, 3>>> u_grads(
+      nq, std::vector<Tensor<1, 3>>(3));
+    std::vector<ContactPointRecord> points;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == contact_id)
+            {
+              fvf.reinit(cell, f);
+              fvf.get_function_values(ghosted, u_values);
+              fvf.get_function_gradients(ghosted, u_grads);
+              const double    r      = nitsche_r(cell, f);
+              const Point<3>  centre = cell->face(f)->center();
+              for (unsigned int q = 0; q < nq; ++q)
+                {
+                  const Point<3>  &x  = fvf.quadrature_point(q);
+                  const PointInput in = contact_input(
+                    u_values[q], u_grads[q], fvf.normal_vector(q), x, r, prm,
+                    obstacle);
+                  points.push_back(make_contact_point_record(
+                    in, evaluate_contact_point(in, NonlinearScheme::newton),
+                    x[0], x[1], centre[0], centre[1], fvf.JxW(q)));
+                }
+            }
+    const std::vector<std::vector<ContactPointRecord>> all =
+      Utilities::MPI::gather(comm, points, 0);
+    points.clear();
+    for (const auto &part : all)
+      points.insert(points.end(), part.begin(), part.end());
+    return points;
   }
 
   CycleResults

@@ -1341,6 +1341,33 @@ namespace NitscheContact
 
 
 
+  std::vector<ContactPointRecord>
+  KirchhoffModel::contact_points() const
+  {
+    const unsigned int              nq = quadrature.size();
+    std::vector<ContactPointRecord> points;
+    double                          u[16];
+    for (unsigned int c = 0; c < cells.size(); ++c)
+      {
+        cell_coefficients(solution, c, u);
+        // axis-parallel rectangle: x = v0 + xi (v3 - v0)
+        const Point<2> v0 = cells[c]->vertex(0), v3 = cells[c]->vertex(3),
+                       centre = cells[c]->center();
+        for (unsigned int q = 0; q < nq; ++q)
+          {
+            const Point<2>  &xi = quadrature.point(q);
+            const PointInput in = point_input(c, q, u);
+            points.push_back(make_contact_point_record(
+              in, evaluate_contact_point(in, NonlinearScheme::newton),
+              v0[0] + xi[0] * (v3[0] - v0[0]), v0[1] + xi[1] * (v3[1] - v0[1]),
+              centre[0], centre[1], kit.JxW[q]));
+          }
+      }
+    return points;
+  }
+
+
+
   CycleResults
   KirchhoffModel::postprocess(const std::vector<Point<2>> &probes)
   {

@@ -1319,6 +1319,39 @@ namespace NitscheContact
 
 
 
+  std::vector<ContactPointRecord>
+  MindlinModel::contact_points() const
+  {
+    const unsigned int n  = fe.n_dofs_per_cell();
+    const unsigned int nq = contact_quadrature.size();
+    std::vector<types::global_dof_index> dofs(n);
+    Vector<double>                       u(n);
+    std::vector<ContactPointRecord>      points;
+    for (unsigned int c = 0; c < cell_grid.size(); ++c)
+      {
+        const auto &cell = cell_grid[c];
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < n; ++i)
+          u(i) = solution(dofs[i]);
+        // axis-parallel rectangle: x = v0 + xi (v3 - v0)
+        const Point<2> v0 = cell->vertex(0), v3 = cell->vertex(3),
+                       centre = cell->center();
+        for (unsigned int q = 0; q < nq; ++q)
+          {
+            const Point<2>  &xi = contact_quadrature.point(q);
+            const PointInput in =
+              point_input(u, q, gaps[static_cast<std::size_t>(c) * nq + q]);
+            points.push_back(make_contact_point_record(
+              in, evaluate_contact_point(in, NonlinearScheme::newton),
+              v0[0] + xi[0] * (v3[0] - v0[0]), v0[1] + xi[1] * (v3[1] - v0[1]),
+              centre[0], centre[1], contact_JxW[q]));
+          }
+      }
+    return points;
+  }
+
+
+
   CycleResults
   MindlinModel::postprocess(const std::vector<Point<2>> &probes)
   {

@@ -93,4 +93,38 @@ check(abs(ex["tangential_resultant_x"]) <= 1e-6 * ex["tangential_force"],
       % (ex["tangential_resultant_x"], ex["tangential_force"]))
 # Friction on the lower face changes the deflection only slightly here.
 close(cf["probes"][1], cp["probes"][1], 1e-2, "F=0.2: w(2) close to frictionless")
+
+# The shipped parameter file of the paper's test with F = 0.2, nested from
+# 8^2 to 32^2 cells. Its full Newton steps wander on the 16^2 cycle without
+# ever repeating a contact status (400 iterations, session 13), so the
+# file sets 'Damping after no decrease = 20' (damped steps once |R| has had
+# no new minimum in 20 steps); with the rule off the run must fail.
+import os, re
+paper = open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
+                          "parameters", "paper_mindlin_friction.prm")).read()
+paper, n = re.subn(r"(?m)^(\s*set Number of cycles\s*=).*$", r"\1 3", paper)
+check(n == 1, "paper_mindlin_friction.prm: one 'Number of cycles'")
+frictionless = paper.replace("set Friction coefficient = 0.2", "set Friction coefficient = 0")
+ref, _ = run(args, "paper_frictionless", frictionless)
+pf, out = run(args, "paper_friction", paper)
+check(all(c["converged"] for c in pf["cycles"]), "paper, F=0.2: all cycles converged "
+      "(%s iterations)" % [c["nonlinear_iterations"] for c in pf["cycles"]])
+check("no new minimum of |R|" in out, "paper, F=0.2: the damping rule was used")
+for cycle, (c, r) in enumerate(zip(pf["cycles"], ref["cycles"])):
+    ex = c["extra"]
+    check(ex["max_friction_ratio"] <= 1 + 1e-9,
+          "paper, F=0.2, cycle %d: max |Lambda_t| / (F |Lambda_n|) = %.12g <= 1"
+          % (cycle, ex["max_friction_ratio"]))
+    # (stick points carry r u_t with r = 4e7: round-off of u_t shows)
+    check(abs(ex["tangential_resultant_x"]) <= 1e-6 * c["contact_force"] and
+          abs(ex["tangential_resultant_y"]) <= 1e-6 * c["contact_force"],
+          "paper, F=0.2, cycle %d: tangential resultant (%.3g, %.3g) ~ 0 (symmetry; "
+          "1e-6 of the reaction)"
+          % (cycle, ex["tangential_resultant_x"], ex["tangential_resultant_y"]))
+    close(c["contact_force"], r["contact_force"], 1e-2,
+          "paper, F=0.2, cycle %d: reaction close to frictionless" % cycle)
+off, n = re.subn(r"(?m)^(\s*set Damping after no decrease\s*=).*$", r"\1 0", paper)
+check(n == 1, "paper_mindlin_friction.prm: one 'Damping after no decrease'")
+_, out = run(args, "paper_friction_rule_off", off, expect_status=2)
+check("did not converge" in out, "paper, F=0.2, rule off: no convergence (as before session 13)")
 finish()

@@ -90,6 +90,8 @@ namespace NitscheContact
     solution_energy_norm() const override;
     CycleResults
     postprocess(const std::vector<dealii::Point<2>> &probes) override;
+    std::vector<ContactPointRecord>
+    contact_points() const override;
     std::vector<double>
     deflection_at(const std::vector<dealii::Point<2>> &points) const override;
     std::vector<std::pair<std::string, std::string>>

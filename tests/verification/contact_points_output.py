@@ -1,0 +1,93 @@
+"""'Output/Contact points': the per-point CSV (contact_points-NN.csv) of
+every model against the program's other account of the same iterate, the
+cycle records of summary.json (computed by each model's postprocessing and
+by the driver's status counts), and the 3D file on 2 MPI ranks against 1.
+Runs: the paper's test with each model on small meshes (3D 8 x 8 x 1 ->
+16 x 16 x 1, Gauss-Lobatto contact points, gamma0 = 60; Mindlin with
+friction F = 0.2, 8^2 -> 16^2, where the active points slip;
+Kirchhoff GSV 16^2 -> 32^2).
+Checks per cycle: one row per contact point (summary 'contact_points'),
+the rows with status > 0 are the active points ('active_points', and
+for Mindlin with friction 'stick_points' / 'slip_points' by status 1 / 2,
+with slip rows present), sum of weight x pressure
+is the contact force (relative 1e-9; 12 digits in the file), pressure >= 0 and positive only at
+active points, s_n > 0 exactly at the inactive ones, the weights sum to
+the plate area 100, and every point lies in its cell (within half the cell
+size of the cell centre). 3D: the files of 1 and 2 ranks hold the same
+points (sorted by position and cell) with the same status and pressures
+(within 1e-4 of the largest pressure: the Newton tolerance 1e-6 bounds
+the energy norm of the error, measured pointwise differences 1.2e-5)."""
+import csv, os, re, sys
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from common import parse_args, run, check, close, finish
+
+args = parse_args()
+here = os.path.dirname(os.path.abspath(__file__))
+parameters = os.path.join(here, "..", "..", "parameters")
+
+
+def prm_from(name, replacements):
+    text = open(os.path.join(parameters, name)).read()
+    for pattern, value in replacements:
+        text, n = re.subn(r"(?m)^(\s*set %s\s*=).*$" % re.escape(pattern),
+                          lambda m: m.group(1) + " " + value, text)
+        check(n == 1, "%s: one entry '%s'" % (name, pattern))
+    return text + "\nsubsection Output\n  set Contact points = true\nend\n"
+
+
+def read_points(name, cycle):
+    path = os.path.join(args.workdir, name, "contact_points-%02d.csv" % cycle)
+    with open(path) as f:
+        return [{k: float(v) for k, v in row.items()} for row in csv.DictReader(f)]
+
+
+cases = [("elasticity", "paper_3d.prm",
+          [("Number of cycles", "2"), ("Tolerance", "1e-6"),
+           ("Refine through thickness", "false\n  set Contact quadrature rule = lobatto"),
+           ("Nitsche gamma0", "60")], [1, 2]),
+         ("mindlin", "paper_mindlin_friction.prm", [("Number of cycles", "2")], [1]),
+         ("kirchhoff", "paper_kirchhoff.prm", [("Number of cycles", "2")], [1])]
+
+files = {}
+for tag, prm, changes, ranks in cases:
+    for np in ranks:
+        name = "%s_np%d" % (tag, np)
+        summary, _ = run(args, name, prm_from(prm, changes), np=np)
+        for record in summary["cycles"]:
+            c = record["cycle"]
+            what = "%s cycle %d" % (name, c)
+            pts = read_points(name, c)
+            files[(tag, np, c)] = pts
+            check(len(pts) == record["contact_points"],
+                  "%s: %d rows, %d contact points" % (what, len(pts), record["contact_points"]))
+            by_status = [sum(1 for p in pts if p["status"] == s) for s in (1, 2)]
+            check(by_status[0] + by_status[1] == record["active_points"],
+                  "%s: %d rows with status > 0, %d active points"
+                  % (what, by_status[0] + by_status[1], record["active_points"]))
+            if tag == "mindlin":
+                check(by_status == [record["stick_points"], record["slip_points"]]
+                      and by_status[1] > 0,
+                      "%s: stick / slip rows %s, summary %d / %d"
+                      % (what, by_status, record["stick_points"], record["slip_points"]))
+            close(sum(p["weight"] * p["pressure"] for p in pts), record["contact_force"],
+                  1e-9, what + ": sum of weight x pressure = contact force")
+            close(sum(p["weight"] for p in pts), 100., 1e-9, what + ": sum of the weights")
+            check(all(p["pressure"] >= 0. and (p["pressure"] == 0. or p["status"] > 0)
+                      for p in pts), what + ": pressure >= 0, positive only at active points")
+            check(all((p["s_n"] > 0.) == (p["status"] == 0) for p in pts),
+                  what + ": s_n > 0 exactly at the inactive points")
+            half = 0.5 * record["h"] * (1 + 1e-9)
+            check(all(abs(p["x"] - p["cell_x"]) <= half and abs(p["y"] - p["cell_y"]) <= half
+                      for p in pts), what + ": every point within its cell (h = %g)" % record["h"])
+
+for c in (0, 1):
+    key = lambda p: (round(p["x"], 9), round(p["y"], 9), round(p["cell_x"], 9),
+                     round(p["cell_y"], 9))
+    a = sorted(files[("elasticity", 1, c)], key=key)
+    b = sorted(files[("elasticity", 2, c)], key=key)
+    pmax = max(p["pressure"] for p in a)
+    same = len(a) == len(b) and all(
+        key(p) == key(q) and p["status"] == q["status"]
+        and abs(p["pressure"] - q["pressure"]) <= 1e-4 * pmax for p, q in zip(a, b))
+    check(same, "elasticity cycle %d: the same points, statuses and pressures on 1 and 2 ranks" % c)
+finish()
