@@ -465,7 +465,7 @@ namespace NitscheContact
         "Newton steps. Full steps with Coulomb friction can wander without "
         "ever repeating a contact status (paper_mindlin_friction.prm sets "
         "20); the damped steps (Armijo on |R|) are slow on paths that full "
-        "steps would finish (Kirchhoff with Nitsche, theta = 0: 88 "
+        "steps would finish (a Kirchhoff-with-Nitsche test, theta = 0: 88 "
         "iterations with full steps, 160 with 50, none in 200 with 30), so "
         "0 (never) is the default.");
       prm.declare_entry("Print iterations", "true", Patterns::Bool(),

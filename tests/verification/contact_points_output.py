@@ -16,7 +16,8 @@ the plate area 100, and every point lies in its cell (within half the cell
 size of the cell centre). 3D: the files of 1 and 2 ranks hold the same
 points (sorted by position and cell) with the same status and pressures
 (within 1e-4 of the largest pressure: the Newton tolerance 1e-6 bounds
-the energy norm of the error, measured pointwise differences 1.2e-5)."""
+the energy norm of the error, measured pointwise differences 1.2e-5).
+Finally parameters/plot_contact_points.py draws two of the files."""
 import csv, os, re, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from common import parse_args, run, check, close, finish
@@ -90,4 +91,18 @@ for c in (0, 1):
         key(p) == key(q) and p["status"] == q["status"]
         and abs(p["pressure"] - q["pressure"]) <= 1e-4 * pmax for p, q in zip(a, b))
     check(same, "elasticity cycle %d: the same points, statuses and pressures on 1 and 2 ranks" % c)
+
+# The plotting tool of the parameters/ directory draws these files.
+import subprocess
+python = sys.executable
+if subprocess.run([python, "-c", "import matplotlib"], capture_output=True).returncode != 0:
+    python = "/usr/bin/python3"  # Debian's, with python3-matplotlib
+png = os.path.join(args.workdir, "contact_points.png")
+proc = subprocess.run([python, os.path.join(parameters, "plot_contact_points.py"),
+                       os.path.join(args.workdir, "elasticity_np2", "contact_points-01.csv") + ":3D",
+                       os.path.join(args.workdir, "mindlin_np1", "contact_points-01.csv"),
+                       "--window", "0", "5", "0", "5", "-o", png],
+                      capture_output=True, text=True)
+check(proc.returncode == 0 and os.path.getsize(png) > 10000,
+      "plot_contact_points.py draws two panels (%s)" % (proc.stdout.strip() or proc.stderr.strip()))
 finish()
