@@ -685,6 +685,22 @@ namespace NitscheContact
     previous_status.clear();
   }
 
+  template <typename FaceWork>
+  void
+  ElasticityModel::for_each_contact_face(FEFaceValues<3> &fvf,
+                                         FaceWork       &&work) const
+  {
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == contact_id)
+            {
+              fvf.reinit(cell, f);
+              work(cell, f, nitsche_r(cell, f));
+            }
+  }
+
   void
   ElasticityModel::assemble_bulk()
   {
@@ -783,25 +799,22 @@ namespace NitscheContact
                         update_values | update_gradients | update_JxW_values |
                           update_normal_vectors);
     std::vector<ShapeContactData> shapes(n);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              cell->face(f)->boundary_id() == contact_id)
-            {
-              fvc.reinit(cell, f);
-              const double r = nitsche_r(cell, f);
-              cell_matrix    = 0.;
-              for (unsigned int q = 0; q < contact_face_quadrature.size(); ++q)
-                {
-                  shape_contact_data(fvc, q, comp, lambda, mu, shapes);
-                  add_theta_terms(prm.theta / r, prm.friction > 0., shapes,
-                                  fvc.JxW(q), nullptr, &cell_matrix, nullptr);
-                }
-              cell->get_dof_indices(dofs);
-              constraints.distribute_local_to_global(cell_matrix, dofs,
-                                                     theta_matrix);
-            }
+    for_each_contact_face(
+      fvc,
+      [&](const DoFHandler<3>::active_cell_iterator &cell,
+          const unsigned int /*f*/,
+          const double                               r) {
+        cell_matrix = 0.;
+        for (unsigned int q = 0; q < contact_face_quadrature.size(); ++q)
+          {
+            shape_contact_data(fvc, q, comp, lambda, mu, shapes);
+            add_theta_terms(prm.theta / r, prm.friction > 0., shapes,
+                            fvc.JxW(q), nullptr, &cell_matrix, nullptr);
+          }
+        cell->get_dof_indices(dofs);
+        constraints.distribute_local_to_global(cell_matrix, dofs,
+                                               theta_matrix);
+      });
     theta_matrix.compress(VectorOperation::add);
   }
 
@@ -1002,57 +1015,54 @@ namespace NitscheContact
     std::vector<unsigned char> status;
     ContactCounts              counts;
     double                     contact_energy = 0.;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              cell->face(f)->boundary_id() == contact_id)
-            {
-              fvf.reinit(cell, f);
-              fvf.get_function_values(ghosted, u_values);
-              fvf.get_function_gradients(ghosted, u_grads);
-              const double r = nitsche_r(cell, f);
-              bool         any_active = false;
-              for (unsigned int q = 0; q < face_quadrature.size(); ++q)
-                {
-                  const Tensor<1, 3> nrm = fvf.normal_vector(q);
-                  const PointInput in =
-                    contact_input(u_values[q], u_grads[q], nrm,
-                                  fvf.quadrature_point(q), r, prm, obstacle);
-                  const PointState st = evaluate_contact_point(in, scheme);
-                  status.push_back(static_cast<unsigned char>(st.status));
-                  contact_energy += contact_energy_density(in, st) * fvf.JxW(q);
-                  if (st.status == PointStatus::inactive)
-                    continue; // all in C
-                  if (!any_active)
-                    {
-                      any_active    = true;
-                      cell_matrix   = 0.;
-                      cell_residual = 0.;
-                    }
-                  shape_contact_data(fvf, q, comp, lambda, mu, shapes);
-                  add_point_contribution(in, st, shapes, fvf.JxW(q),
-                                         with_matrix ? &cell_matrix : nullptr,
-                                         cell_residual);
-                  if (prm.theta != 0.)
-                    add_theta_terms(prm.theta / r, prm.friction > 0., shapes,
-                                    -fvf.JxW(q), &in,
-                                    with_matrix ? &cell_matrix : nullptr,
-                                    &cell_residual);
-                }
-              if (!any_active)
-                continue;
-              cell->get_dof_indices(dofs);
-              cell_residual *= -1.; // we assemble -R
-              if (with_matrix)
-                constraints.distribute_local_to_global(cell_matrix,
-                                                       cell_residual, dofs,
-                                                       system_matrix,
-                                                       residual);
-              else
-                constraints.distribute_local_to_global(cell_residual, dofs,
-                                                       residual);
-            }
+    for_each_contact_face(
+      fvf,
+      [&](const DoFHandler<3>::active_cell_iterator &cell,
+          const unsigned int /*f*/,
+          const double                               r) {
+        fvf.get_function_values(ghosted, u_values);
+        fvf.get_function_gradients(ghosted, u_grads);
+        bool any_active = false;
+        for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+          {
+            const Tensor<1, 3> nrm = fvf.normal_vector(q);
+            const PointInput in =
+              contact_input(u_values[q], u_grads[q], nrm,
+                            fvf.quadrature_point(q), r, prm, obstacle);
+            const PointState st = evaluate_contact_point(in, scheme);
+            status.push_back(static_cast<unsigned char>(st.status));
+            contact_energy += contact_energy_density(in, st) * fvf.JxW(q);
+            if (st.status == PointStatus::inactive)
+              continue; // all in C
+            if (!any_active)
+              {
+                any_active    = true;
+                cell_matrix   = 0.;
+                cell_residual = 0.;
+              }
+            shape_contact_data(fvf, q, comp, lambda, mu, shapes);
+            add_point_contribution(in, st, shapes, fvf.JxW(q),
+                                   with_matrix ? &cell_matrix : nullptr,
+                                   cell_residual);
+            if (prm.theta != 0.)
+              add_theta_terms(prm.theta / r, prm.friction > 0., shapes,
+                              -fvf.JxW(q), &in,
+                              with_matrix ? &cell_matrix : nullptr,
+                              &cell_residual);
+          }
+        if (!any_active)
+          return;
+        cell->get_dof_indices(dofs);
+        cell_residual *= -1.; // we assemble -R
+        if (with_matrix)
+          constraints.distribute_local_to_global(cell_matrix,
+                                                 cell_residual, dofs,
+                                                 system_matrix,
+                                                 residual);
+        else
+          constraints.distribute_local_to_global(cell_residual, dofs,
+                                                 residual);
+      });
     if (with_matrix)
       system_matrix.compress(VectorOperation::add);
     residual.compress(VectorOperation::add);
@@ -1276,45 +1286,42 @@ namespace NitscheContact
       du_grads(nq, std::vector<Tensor<1, 3>>(3));
     double local_constant = 0., local_linear = 0.;
     line_switching.clear();
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              cell->face(f)->boundary_id() == contact_id)
-            {
-              fvf.reinit(cell, f);
-              fvf.get_function_values(u0, u0_values);
-              fvf.get_function_gradients(u0, u0_grads);
-              fvf.get_function_values(du, du_values);
-              fvf.get_function_gradients(du, du_grads);
-              const double r = nitsche_r(cell, f);
-              for (unsigned int q = 0; q < nq; ++q)
-                {
-                  const Tensor<1, 3> nrm = fvf.normal_vector(q);
-                  const Point<3>    &x   = fvf.quadrature_point(q);
-                  const PointInput   in0 = contact_input(
-                    u0_values[q], u0_grads[q], nrm, x, r, prm, obstacle);
-                  const PointInput ind = contact_input(
-                    du_values[q], du_grads[q], nrm, x, r, prm, obstacle);
-                  const double s0 = in0.sigma_n - r * (in0.u_n - in0.gap);
-                  const double ds = ind.sigma_n - r * ind.u_n;
-                  const double coefficient =
-                    fvf.JxW(q) *
-                    (ind.u_n - (prm.theta / r) * ind.sigma_n);
-                  const bool active0 = (s0 <= 0.), active1 = (s0 + ds <= 0.);
-                  if (active0 && active1)
-                    {
-                      local_constant -= coefficient * s0;
-                      local_linear -= coefficient * ds;
-                    }
-                  else if (active0 != active1)
-                    {
-                      line_switching.push_back(s0);
-                      line_switching.push_back(ds);
-                      line_switching.push_back(coefficient);
-                    }
-                }
-            }
+    for_each_contact_face(
+      fvf,
+      [&](const DoFHandler<3>::active_cell_iterator &/*cell*/,
+          const unsigned int /*f*/,
+          const double                               r) {
+        fvf.get_function_values(u0, u0_values);
+        fvf.get_function_gradients(u0, u0_grads);
+        fvf.get_function_values(du, du_values);
+        fvf.get_function_gradients(du, du_grads);
+        for (unsigned int q = 0; q < nq; ++q)
+          {
+            const Tensor<1, 3> nrm = fvf.normal_vector(q);
+            const Point<3>    &x   = fvf.quadrature_point(q);
+            const PointInput   in0 = contact_input(
+              u0_values[q], u0_grads[q], nrm, x, r, prm, obstacle);
+            const PointInput ind = contact_input(
+              du_values[q], du_grads[q], nrm, x, r, prm, obstacle);
+            const double s0 = in0.sigma_n - r * (in0.u_n - in0.gap);
+            const double ds = ind.sigma_n - r * ind.u_n;
+            const double coefficient =
+              fvf.JxW(q) *
+              (ind.u_n - (prm.theta / r) * ind.sigma_n);
+            const bool active0 = (s0 <= 0.), active1 = (s0 + ds <= 0.);
+            if (active0 && active1)
+              {
+                local_constant -= coefficient * s0;
+                local_linear -= coefficient * ds;
+              }
+            else if (active0 != active1)
+              {
+                line_switching.push_back(s0);
+                line_switching.push_back(ds);
+                line_switching.push_back(coefficient);
+              }
+          }
+      });
     line_constant = constant + Utilities::MPI::sum(local_constant, comm);
     line_linear   = linear + Utilities::MPI::sum(local_linear, comm);
     return true;
@@ -1390,28 +1397,25 @@ namespace NitscheContact
     std::vector<std::vector<Tensor<1, 3>>> u_grads(
       nq, std::vector<Tensor<1, 3>>(3));
     std::vector<ContactPointRecord> points;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              cell->face(f)->boundary_id() == contact_id)
-            {
-              fvf.reinit(cell, f);
-              fvf.get_function_values(ghosted, u_values);
-              fvf.get_function_gradients(ghosted, u_grads);
-              const double    r      = nitsche_r(cell, f);
-              const Point<3>  centre = cell->face(f)->center();
-              for (unsigned int q = 0; q < nq; ++q)
-                {
-                  const Point<3>  &x  = fvf.quadrature_point(q);
-                  const PointInput in = contact_input(
-                    u_values[q], u_grads[q], fvf.normal_vector(q), x, r, prm,
-                    obstacle);
-                  points.push_back(make_contact_point_record(
-                    in, evaluate_contact_point(in, NonlinearScheme::newton),
-                    x[0], x[1], centre[0], centre[1], fvf.JxW(q)));
-                }
-            }
+    for_each_contact_face(
+      fvf,
+      [&](const DoFHandler<3>::active_cell_iterator &cell,
+          const unsigned int                         f,
+          const double                               r) {
+        fvf.get_function_values(ghosted, u_values);
+        fvf.get_function_gradients(ghosted, u_grads);
+        const Point<3> centre = cell->face(f)->center();
+        for (unsigned int q = 0; q < nq; ++q)
+          {
+            const Point<3>  &x  = fvf.quadrature_point(q);
+            const PointInput in = contact_input(
+              u_values[q], u_grads[q], fvf.normal_vector(q), x, r, prm,
+              obstacle);
+            points.push_back(make_contact_point_record(
+              in, evaluate_contact_point(in, NonlinearScheme::newton),
+              x[0], x[1], centre[0], centre[1], fvf.JxW(q)));
+          }
+      });
     const std::vector<std::vector<ContactPointRecord>> all =
       Utilities::MPI::gather(comm, points, 0);
     points.clear();
@@ -1459,43 +1463,40 @@ namespace NitscheContact
     double area = 0., force = 0., stick_area = 0., slip_area = 0.,
            max_pressure = 0., max_penetration = -1e300, max_ratio = 0.;
     Tensor<1, 3> tangential_force;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              cell->face(f)->boundary_id() == contact_id)
-            {
-              fvf.reinit(cell, f);
-              fvf.get_function_values(ghosted, u_values);
-              fvf.get_function_gradients(ghosted, u_grads);
-              const double r = nitsche_r(cell, f);
-              for (unsigned int q = 0; q < face_quadrature.size(); ++q)
-                {
-                  const Tensor<1, 3> nrm = fvf.normal_vector(q);
-                  const PointInput in =
-                    contact_input(u_values[q], u_grads[q], nrm,
-                                  fvf.quadrature_point(q), r, prm, obstacle);
-                  const PointState st =
-                    evaluate_contact_point(in, NonlinearScheme::newton);
-                  const double JxW = fvf.JxW(q);
-                  max_penetration  = std::max(max_penetration, in.u_n - in.gap);
-                  if (st.lambda_n < 0.)
-                    {
-                      area += JxW;
-                      force += -st.lambda_n * JxW;
-                      max_pressure = std::max(max_pressure, -st.lambda_n);
-                      if (st.status == PointStatus::slip)
-                        slip_area += JxW;
-                      else
-                        stick_area += JxW;
-                      max_ratio = std::max(max_ratio,
-                                           st.lambda_t.norm() / -st.lambda_n);
-                    }
-                  // the obstacle acts on the body with the traction
-                  // Lambda_n n + Lambda_t
-                  tangential_force += st.lambda_t * JxW;
-                }
-            }
+    for_each_contact_face(
+      fvf,
+      [&](const DoFHandler<3>::active_cell_iterator &/*cell*/,
+          const unsigned int /*f*/,
+          const double                               r) {
+        fvf.get_function_values(ghosted, u_values);
+        fvf.get_function_gradients(ghosted, u_grads);
+        for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+          {
+            const Tensor<1, 3> nrm = fvf.normal_vector(q);
+            const PointInput in =
+              contact_input(u_values[q], u_grads[q], nrm,
+                            fvf.quadrature_point(q), r, prm, obstacle);
+            const PointState st =
+              evaluate_contact_point(in, NonlinearScheme::newton);
+            const double JxW = fvf.JxW(q);
+            max_penetration  = std::max(max_penetration, in.u_n - in.gap);
+            if (st.lambda_n < 0.)
+              {
+                area += JxW;
+                force += -st.lambda_n * JxW;
+                max_pressure = std::max(max_pressure, -st.lambda_n);
+                if (st.status == PointStatus::slip)
+                  slip_area += JxW;
+                else
+                  stick_area += JxW;
+                max_ratio = std::max(max_ratio,
+                                     st.lambda_t.norm() / -st.lambda_n);
+              }
+            // the obstacle acts on the body with the traction
+            // Lambda_n n + Lambda_t
+            tangential_force += st.lambda_t * JxW;
+          }
+      });
     res.contact_area  = Utilities::MPI::sum(area, comm);
     res.contact_force = Utilities::MPI::sum(force, comm);
 

@@ -9,6 +9,7 @@
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -102,6 +103,11 @@ namespace NitscheContact
     assemble_bulk();
     double
     energy_norm(const dealii::TrilinosWrappers::MPI::Vector &v) const;
+    /// work(cell, f, r) for every contact face f of the locally owned
+    /// cells, after fvf.reinit(cell, f); r is the face's Nitsche parameter.
+    template <typename FaceWork>
+    void
+    for_each_contact_face(dealii::FEFaceValues<3> &fvf, FaceWork &&work) const;
     /// The Nitsche parameter r = gamma0 E / h_n of a contact face.
     double
     nitsche_r(const dealii::DoFHandler<3>::active_cell_iterator &cell,
