@@ -6,7 +6,9 @@
 # in-plane subdivisions and keeps one Q2 layer through the thickness
 # ('plane', as paper_3d.prm) or refines every cell in all three directions
 # ('all': the layers double too). Prints DoFs, nonlinear iterations and
-# wall-clock seconds per phase (from summary.json, 'Print timings = true').
+# wall-clock seconds per phase (from summary.json, 'Print timings = true'),
+# and the peak memory of the largest process (one MPI rank) when
+# /usr/bin/time is installed.
 # The sixth argument selects the 3x3 contact points per face: 'gauss'
 # (default, as paper_3d.prm) or 'lobatto' (the Q2 face nodes; fewer Newton
 # iterations, doc/benchmarks.md). The seventh sets gamma0 (default 20, as
@@ -67,7 +69,11 @@ sed -e "s/^\( *set Number of cycles *=\).*/\1 $cycles/" \
 run=("$exe")
 if [ "$ranks" -gt 1 ]; then run=(mpirun -np "$ranks" "$exe"); fi
 start=$(date +%s.%N)
-"${run[@]}" "$work/bench.prm" > "$work/log" 2>&1 || { cat "$work/log"; exit 1; }
+# /usr/bin/time (Debian package 'time') reports the peak resident memory of
+# the largest process (one MPI rank); without it the line is left out
+timer=()
+if [ -x /usr/bin/time ]; then timer=(/usr/bin/time -v -o "$work/time"); fi
+"${timer[@]}" "${run[@]}" "$work/bench.prm" > "$work/log" 2>&1 || { cat "$work/log"; exit 1; }
 end=$(date +%s.%N)
 python3 - "$work/out/summary.json" "$start" "$end" "$solver" "$ranks" "$rule" "$gamma0" "$factorization" <<'PY'
 import json, sys
@@ -91,3 +97,6 @@ for c in s["cycles"]:
 print("sum of phases %.1f s, wall clock of the run %.1f s"
       % (acc, float(sys.argv[3]) - float(sys.argv[2])))
 PY
+if [ -f "$work/time" ]; then
+  awk -F': ' '/Maximum resident/ {printf "peak memory of the largest process %.2f GB\n", $2 / 1048576}' "$work/time"
+fi
