@@ -188,10 +188,13 @@ namespace NitscheContact
         // repeating a status (Coulomb friction: measured on the paper's
         // Mindlin test with F = 0.2, whose 16^2 cycle went on for 400
         // iterations): switch to damped steps once the residual norm has
-        // not reached a new minimum in 'Damping after no decrease' steps
-        // (off by default: the damped steps are slow where full steps
-        // would finish).
-        if (c.residual_norm < best_residual)
+        // not reached a new minimum in 'Damping after no decrease' steps.
+        // The starting iterate does not count: from U = 0 (cold start) |R|
+        // is the load, below the penalty-sized residuals of the first
+        // steps, and the rule would fire after N steps whatever happens.
+        if (solves == 0)
+          ;
+        else if (c.residual_norm < best_residual)
           {
             best_residual = c.residual_norm;
             since_best    = 0;
@@ -544,7 +547,7 @@ namespace NitscheContact
                   DataOutBase::write_pvd_record(pvd, series.second);
                 }
           }
-            write_profile(model, cycle);
+        write_profile(model, cycle);
         if (prm.contact_points)
           write_contact_points(model, cycle);
         times.output = timer.wall_time();

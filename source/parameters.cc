@@ -458,16 +458,14 @@ namespace NitscheContact
                         "With 'Line search', damped steps are also used "
                         "from this iteration on (0: always damped).");
       prm.declare_entry(
-        "Damping after no decrease", "0", Patterns::Integer(0, 100000),
+        "Damping after no decrease", "20", Patterns::Integer(0, 100000),
         "With 'Line search' and a formulation without energy (theta != 1 "
         "or friction): damped steps are also used once the residual norm "
-        "has not reached a new minimum in this many consecutive full "
-        "Newton steps. Full steps with Coulomb friction can wander without "
-        "ever repeating a contact status (paper_mindlin_friction.prm sets "
-        "20); the damped steps (Armijo on |R|) are slow on paths that full "
-        "steps would finish (a Kirchhoff-with-Nitsche test, theta = 0: 88 "
-        "iterations with full steps, 160 with 50, none in 200 with 30), so "
-        "0 (never) is the default.");
+        "has not reached a new minimum (the starting iterate not counted) "
+        "in this many consecutive full Newton steps. Full steps with "
+        "Coulomb friction can wander without ever repeating a contact "
+        "status (paper_mindlin_friction.prm does on its 16x16 cycle with "
+        "0). 0: never.");
       prm.declare_entry("Print iterations", "true", Patterns::Bool(),
                         "One log line per nonlinear iteration.");
       prm.declare_entry(
@@ -518,7 +516,7 @@ namespace NitscheContact
       prm.declare_entry(
         "Contact points", "false", Patterns::Bool(),
         "Write contact_points-NN.csv per cycle: every contact quadrature "
-        "point of the converged iterate with x, y, the centre of its cell "
+        "point of the cycle's last (converged) iterate with x, y, the centre of its cell "
         "(3D: face), weight, status (0 inactive, 1 stick, 2 slip), s_n = "
         "sigma_n - r (u_n - g), sigma_n, gap g - u_n and pressure "
         "-Lambda_n. Points on shared vertices and edges appear once per "

@@ -123,7 +123,7 @@ namespace NitscheContact
     unsigned int    damping_after          = 100000;
     unsigned int    nonmonotone_window     = 5;
     bool            fast_line_search       = true;
-    unsigned int    damping_without_decrease = 0;
+    unsigned int    damping_without_decrease = 20;
     bool            reuse_factorization    = true;
     /// Nonlinear solver/Symmetric factorization: L D L^T (MUMPS) for
     /// symmetric Newton matrices
