@@ -421,7 +421,8 @@ namespace NitscheContact
         "settled) or the full step passes the test of 'Nonmonotone "
         "window'. "
         "Otherwise: full steps until the contact status cycles (a status "
-        "seen before reappears) or 'Damping after' iterations, then "
+        "seen before reappears), 'Damping after' iterations or 'Damping "
+        "after no decrease' steps without a new minimum of |R|, then "
         "backtracking on the residual norm. false: always full steps.");
       prm.declare_entry("Allow non-convergence", "false", Patterns::Bool(),
                         "If false (default) a run whose nonlinear solver "
