@@ -93,7 +93,7 @@ namespace NitscheContact
     bool         damping = prm.line_search && prm.damping_after == 0;
     unsigned int solves  = 0;
     // Without an energy: the smallest residual norm so far and the number
-    // of full steps since it was reached (see 'Damping after').
+    // of full steps since it was reached (see 'Damping after no decrease').
     double       best_residual = std::numeric_limits<double>::infinity();
     unsigned int since_best    = 0;
     bool         energy_known  = false, without_energy = false;
@@ -192,14 +192,12 @@ namespace NitscheContact
         // The starting iterate does not count: from U = 0 (cold start) |R|
         // is the load, below the penalty-sized residuals of the first
         // steps, and the rule would fire after N steps whatever happens.
-        if (solves == 0)
-          ;
-        else if (c.residual_norm < best_residual)
+        if (solves > 0 && c.residual_norm < best_residual)
           {
             best_residual = c.residual_norm;
             since_best    = 0;
           }
-        else
+        else if (solves > 0)
           ++since_best;
         if (!damping && prm.line_search && energy_known && without_energy &&
             prm.damping_without_decrease > 0 &&
