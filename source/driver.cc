@@ -117,6 +117,8 @@ namespace NitscheContact
         const ContactCounts c = model.assemble(prm.scheme, true);
         t.assembly += timer.wall_time();
         records.back().counts = c;
+        if (prm.contact_points_per_iteration)
+          write_contact_points(model, cycle, solves);
         if (!std::isfinite(c.residual_norm))
           throw ConvergenceFailure(
             "the residual is not a finite number (" +
@@ -626,15 +628,31 @@ namespace NitscheContact
         std::filesystem::copy_options::overwrite_existing);
   }
 
+  namespace
+  {
+    /// "-i007": at least three digits (more above 999 iterations)
+    std::string
+    iterate_suffix(const int iterate)
+    {
+      std::ostringstream s;
+      s << "-i" << std::setw(3) << std::setfill('0') << iterate;
+      return s.str();
+    }
+  } // namespace
+
   void
   ContactDriver::write_contact_points(const ContactModel &model,
-                                      const unsigned int  cycle) const
+                                      const unsigned int  cycle,
+                                      const int           iterate) const
   {
     const std::vector<ContactPointRecord> points = model.contact_points();
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
+    // iterate < 0: the cycle's converged iterate
     std::ofstream f(prm.output_directory + "/contact_points-" +
-                    Utilities::int_to_string(cycle, 2) + ".csv");
+                    Utilities::int_to_string(cycle, 2) +
+                    (iterate < 0 ? std::string() : iterate_suffix(iterate)) +
+                    ".csv");
     f << "x,y,cell_x,cell_y,weight,status,s_n,sigma_n,gap,pressure\n"
       << std::setprecision(12);
     for (const ContactPointRecord &p : points)

@@ -524,6 +524,17 @@ namespace NitscheContact
         "cell; the pressures times the weights sum to the contact force. "
         "One line per point: large for fine meshes (the 1M-DoF Kirchhoff "
         "run has 9.4 million points).");
+      prm.declare_entry(
+        "Contact points per iteration", "false", Patterns::Bool(),
+        "Also write contact_points-NN-iKKK.csv, in the format of 'Contact "
+        "points', at every iterate of the nonlinear solver on cycle NN: "
+        "KKK is the number of linear solves done on the cycle, so iKKK is "
+        "the iterate from which step KKK+1 starts and its log line is "
+        "'iteration KKK+1' (i000: the starting iterate, on a nested cycle "
+        "the previous cycle's solution carried over). The converged "
+        "iterate itself is contact_points-NN.csv ('Contact points'). For "
+        "studying how the contact status settles (parameters/"
+        "plot_contact_points.py --against); one file per iteration.");
       prm.declare_entry("Profile points", "101", Patterns::Integer(2, 100000),
                         "Number of points along the profile line.");
       prm.declare_entry("Field grid points", "0", Patterns::Integer(0, 2000),
@@ -743,6 +754,8 @@ namespace NitscheContact
       profile_points = prm.get_integer("Profile points");
       field_points   = prm.get_integer("Field grid points");
       contact_points = prm.get_bool("Contact points");
+      contact_points_per_iteration =
+        prm.get_bool("Contact points per iteration");
       // the deflection is only defined on the plate (a point outside would
       // be reported as NaN)
       const double slack = 1e-10 * std::max(length_x, length_y);

@@ -48,7 +48,9 @@ namespace NitscheContact
 
     /// contact_points-NN.csv ('Output/Contact points')
     void
-    write_contact_points(const ContactModel &model, unsigned int cycle) const;
+    write_contact_points(const ContactModel &model,
+                         unsigned int        cycle,
+                         int                 iterate = -1) const;
 
     void
     write_summary(const ContactModel &model) const;

@@ -138,6 +138,7 @@ namespace NitscheContact
     unsigned int                    profile_points = 101;
     unsigned int                    field_points   = 0;
     bool                            contact_points = false;
+    bool                            contact_points_per_iteration = false;
 
     // "Reference solution"
     std::string exact_solution;  // components separated by ';' (empty: none)

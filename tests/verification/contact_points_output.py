@@ -17,7 +17,14 @@ size of the cell centre). 3D: the files of 1 and 2 ranks hold the same
 points (sorted by position and cell) with the same status and pressures
 (within 1e-4 of the largest pressure: the Newton tolerance 1e-6 bounds
 the energy norm of the error, measured pointwise differences 1.2e-5).
-Finally parameters/plot_contact_points.py draws two of the files."""
+'Contact points per iteration' (Kirchhoff, and 3D on 2 ranks): per
+cycle one file contact_points-NN-iKKK.csv per linear solve (KKK = 0 ...
+nonlinear_iterations - 1), each against the iteration log of the driver:
+its active rows are the 'contact A/B' of the line 'iteration KKK+1', and
+the points whose status differs from file KKK-1 are that line's
+'changed' count.
+Finally parameters/plot_contact_points.py draws two of the files, and
+with --against the status changes of two iterates."""
 import csv, os, re, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from common import parse_args, run, check, close, finish
@@ -27,13 +34,53 @@ here = os.path.dirname(os.path.abspath(__file__))
 parameters = os.path.join(here, "..", "..", "parameters")
 
 
-def prm_from(name, replacements):
+def prm_from(name, replacements, per_iteration):
     text = open(os.path.join(parameters, name)).read()
     for pattern, value in replacements:
         text, n = re.subn(r"(?m)^(\s*set %s\s*=).*$" % re.escape(pattern),
                           lambda m: m.group(1) + " " + value, text)
         check(n == 1, "%s: one entry '%s'" % (name, pattern))
-    return text + "\nsubsection Output\n  set Contact points = true\nend\n"
+    return text + ("\nsubsection Output\n  set Contact points = true\n"
+                   "  set Contact points per iteration = %s\nend\n"
+                   % ("true" if per_iteration else "false"))
+
+
+def iteration_log(log):
+    """{(cycle, k): (active, changed)} from the lines 'iteration k: ...'"""
+    lines, cycle = {}, None
+    for line in log.splitlines():
+        m = re.match(r"Cycle (\d+):", line)
+        if m:
+            cycle = int(m.group(1))
+        m = re.match(r"\s+iteration\s+(\d+): contact (\d+)/\d+.*changed (\d+)", line)
+        if m:
+            lines[(cycle, int(m.group(1)))] = (int(m.group(2)), int(m.group(3)))
+    return lines
+
+
+def check_iterates(name, summary, log):
+    """The per-iteration files of run name against its iteration log."""
+    lines = iteration_log(log)
+    for record in summary["cycles"]:
+        c, its = record["cycle"], record["nonlinear_iterations"]
+        directory = os.path.join(args.workdir, name)
+        present = sorted(f for f in os.listdir(directory)
+                         if re.match(r"contact_points-%02d-i\d+\.csv$" % c, f))
+        check(present == ["contact_points-%02d-i%03d.csv" % (c, k) for k in range(its)],
+              "%s cycle %d: %d per-iteration files for %d iterations"
+              % (name, c, len(present), its))
+        previous = None
+        agree = True
+        for k in range(its):
+            with open(os.path.join(directory, present[k])) as f:
+                status = [float(r["status"]) > 0 for r in csv.DictReader(f)]
+            active, changed = lines[(c, k + 1)]
+            agree = agree and sum(status) == active
+            if previous is not None:
+                agree = agree and sum(a != b for a, b in zip(status, previous)) == changed
+            previous = status
+        check(agree, "%s cycle %d: active and changed points of the %d iterates as logged"
+              % (name, c, its))
 
 
 def read_points(name, cycle):
@@ -48,12 +95,16 @@ cases = [("elasticity", "paper_3d.prm",
            ("Nitsche gamma0", "60")], [1, 2]),
          ("mindlin", "paper_mindlin_friction.prm", [("Number of cycles", "2")], [1]),
          ("kirchhoff", "paper_kirchhoff.prm", [("Number of cycles", "2")], [1])]
+per_iteration = {("elasticity", 2), ("kirchhoff", 1)}
 
 files = {}
 for tag, prm, changes, ranks in cases:
     for np in ranks:
         name = "%s_np%d" % (tag, np)
-        summary, _ = run(args, name, prm_from(prm, changes), np=np)
+        summary, log = run(args, name,
+                           prm_from(prm, changes, (tag, np) in per_iteration), np=np)
+        if (tag, np) in per_iteration:
+            check_iterates(name, summary, log)
         for record in summary["cycles"]:
             c = record["cycle"]
             what = "%s cycle %d" % (name, c)
@@ -105,4 +156,20 @@ proc = subprocess.run([python, os.path.join(parameters, "plot_contact_points.py"
                       capture_output=True, text=True)
 check(proc.returncode == 0 and os.path.getsize(png) > 10000,
       "plot_contact_points.py draws two panels (%s)" % (proc.stdout.strip() or proc.stderr.strip()))
+k_dir = os.path.join(args.workdir, "kirchhoff_np1")
+png = os.path.join(args.workdir, "contact_points_against.png")
+proc = subprocess.run([python, os.path.join(parameters, "plot_contact_points.py"),
+                       os.path.join(k_dir, "contact_points-01-i000.csv") + ":start",
+                       os.path.join(k_dir, "contact_points-01-i001.csv"),
+                       "--against", os.path.join(k_dir, "contact_points-01.csv"), "-o", png],
+                      capture_output=True, text=True)
+check(proc.returncode == 0 and os.path.getsize(png) > 10000,
+      "plot_contact_points.py --against draws the status changes (%s)"
+      % (proc.stdout.strip() or proc.stderr.strip()))
+proc = subprocess.run([python, os.path.join(parameters, "plot_contact_points.py"),
+                       os.path.join(k_dir, "contact_points-01-i000.csv"),
+                       "--against", os.path.join(k_dir, "contact_points-00.csv"), "-o", png],
+                      capture_output=True, text=True)
+check(proc.returncode != 0 and "same points" in proc.stderr,
+      "plot_contact_points.py --against refuses files of different meshes")
 finish()
