@@ -60,8 +60,8 @@ def draw_against(ax, rows, final, window, title):
     grey = [r for r in final if r["status"] > 0 and inside(r)]
     red = [r for r in rows if r["status"] > 0 and not target[point_key(r)] and inside(r)]
     blue = [r for r in rows if r["status"] == 0 and target[point_key(r)] and inside(r)]
-    size = max(0.5, min(4e3 / max(len(grey), 1), 20.))
-    ax.scatter([r["x"] for r in grey], [r["y"] for r in grey], c="#e5e8e8", s=size,
+    size = max(1., min(4e3 / max(len(grey), 1), 20.))
+    ax.scatter([r["x"] for r in grey], [r["y"] for r in grey], c="#d5d8dc", s=size,
                marker="s", linewidths=0)
     for group, colour in ((red, "#c0392b"), (blue, "#2e86c1")):
         ax.scatter([r["x"] for r in group], [r["y"] for r in group], c=colour,
@@ -120,7 +120,7 @@ def main():
     if final is not None:
         handles = [Patch(color="#c0392b", label="active, inactive in %s" % a.against.split("/")[-1]),
                    Patch(color="#2e86c1", label="inactive, active there"),
-                   Patch(color="#e5e8e8", label="active there")]
+                   Patch(color="#d5d8dc", label="active there")]
     else:
         handles = [Patch(color="#c0392b", label="active (every point at the node)"),
                    Patch(color="#f39c12", label="active in some of the cells at the node"),
