@@ -15,8 +15,9 @@ its file differs from that of FINAL (typically the iterates
 contact_points-NN-iKKK.csv of 'Output/Contact points per iteration'
 against the converged contact_points-NN.csv of the same cycle): red, a
 point active in the file but inactive in FINAL; blue, inactive but active
-in FINAL; light grey, the points active in FINAL. The files must hold the
-same points (the same mesh).
+in FINAL; light grey, the points active in FINAL (active or inactive only:
+a stick <-> slip switch is not drawn). The files must hold the same points
+(the same mesh).
 
 usage: plot_contact_points.py FILE[:TITLE] [FILE[:TITLE] ...]
                               [--window X0 X1 Y0 Y1] [--against FINAL.csv]
@@ -24,6 +25,7 @@ usage: plot_contact_points.py FILE[:TITLE] [FILE[:TITLE] ...]
 """
 import argparse
 import csv
+import os
 import sys
 
 import matplotlib
@@ -68,6 +70,9 @@ def draw_against(ax, rows, final, window, title):
                    s=max(2. * size, 1.), marker="s", linewidths=0)
     wrong = sum(1 for r in rows if (r["status"] > 0) != target[point_key(r)])
     ax.set_aspect("equal")
+    if window:
+        ax.set_xlim(window[0], window[1])
+        ax.set_ylim(window[2], window[3])
     ax.set_xlabel("x")
     ax.set_ylabel("y")
     ax.set_title((title + "\n" if title else "") +
@@ -118,7 +123,7 @@ def main():
                      "%d points, %d active, %d lifted by < 1e-6" % (len(rows), active, lifted),
                      fontsize=10)
     if final is not None:
-        handles = [Patch(color="#c0392b", label="active, inactive in %s" % a.against.split("/")[-1]),
+        handles = [Patch(color="#c0392b", label="active, inactive in %s" % os.path.basename(a.against)),
                    Patch(color="#2e86c1", label="inactive, active there"),
                    Patch(color="#d5d8dc", label="active there")]
     else:

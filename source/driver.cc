@@ -117,8 +117,6 @@ namespace NitscheContact
         const ContactCounts c = model.assemble(prm.scheme, true);
         t.assembly += timer.wall_time();
         records.back().counts = c;
-        if (prm.contact_points_per_iteration)
-          write_contact_points(model, cycle, solves);
         if (!std::isfinite(c.residual_norm))
           throw ConvergenceFailure(
             "the residual is not a finite number (" +
@@ -210,6 +208,11 @@ namespace NitscheContact
                   << " full steps: switching to damped steps" << std::endl;
           }
         history.push_back(c.hash);
+
+        // the iterate from which this step starts (log line 'iteration
+        // solves+1')
+        if (prm.contact_points_per_iteration)
+          write_contact_points(model, cycle, solves);
 
         timer.restart();
         const unsigned int linear_its = model.solve_linear();
@@ -489,13 +492,54 @@ namespace NitscheContact
 
         bool        converged = false;
         PhaseTimes &times     = records.back().times;
-        const unsigned int n_steps = (cycle == 0) ? prm.load_steps : 1;
-        records.back().iterations  = 0;
-        for (unsigned int s = 1; s <= n_steps; ++s)
+        records.back().iterations = 0;
+        // The stages of the cycle: load steps on the first cycle, then the
+        // friction continuation (each stage from the previous solution).
+        struct Stage
+        {
+          double      load_factor, friction_scale;
+          std::string label;
+        };
+        std::vector<Stage> stages;
+        const unsigned int n_load     = (cycle == 0) ? prm.load_steps : 1;
+        const unsigned int n_friction =
+          (prm.friction > 0.) ? prm.friction_steps : 0;
+        for (unsigned int s = 1; s <= n_load; ++s)
+          stages.push_back(
+            {double(s) / n_load,
+             n_friction > 0 ? 0. : 1.,
+             n_load > 1 ? "load step " + std::to_string(s) + "/" +
+                            std::to_string(n_load) +
+                            (n_friction > 0 ? " (frictionless)" : "") :
+                          std::string()});
+        if (n_friction > 0)
           {
-            model.set_load_factor(double(s) / n_steps);
-            if (n_steps > 1)
-              pcout << "  load step " << s << "/" << n_steps << std::endl;
+            if (stages.back().label.empty())
+              stages.back().label = "friction step 0/" +
+                                    std::to_string(n_friction) +
+                                    ": frictionless";
+            for (unsigned int k = 1; k <= n_friction; ++k)
+              {
+                const double scale = double(k) / n_friction;
+                stages.push_back({1., scale,
+                                  "friction step " + std::to_string(k) + "/" +
+                                    std::to_string(n_friction) + ": F = " +
+                                    number_to_string(scale * prm.friction)});
+              }
+          }
+        for (unsigned int s = 0; s < stages.size(); ++s)
+          {
+            model.set_load_factor(stages[s].load_factor);
+            model.set_friction_scale(stages[s].friction_scale);
+            stage_suffix.clear();
+            if (stages.size() > 1)
+              {
+                std::ostringstream suffix;
+                suffix << "-s" << std::setw(2) << std::setfill('0') << s + 1;
+                stage_suffix = suffix.str();
+              }
+            if (!stages[s].label.empty())
+              pcout << "  " << stages[s].label << std::endl;
             records.back().iterations +=
               solve_nonlinear(model, cycle, times, converged);
             if (!converged)
@@ -651,7 +695,8 @@ namespace NitscheContact
     // iterate < 0: the cycle's converged iterate
     std::ofstream f(prm.output_directory + "/contact_points-" +
                     Utilities::int_to_string(cycle, 2) +
-                    (iterate < 0 ? std::string() : iterate_suffix(iterate)) +
+                    (iterate < 0 ? std::string() :
+                                   stage_suffix + iterate_suffix(iterate)) +
                     ".csv");
     f << "x,y,cell_x,cell_y,weight,status,s_n,sigma_n,gap,pressure\n"
       << std::setprecision(12);

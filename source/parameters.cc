@@ -439,6 +439,19 @@ namespace NitscheContact
         "few; later cycles start from the previous cycle's solution at "
         "full load (nested iteration).");
       prm.declare_entry(
+        "Friction steps", "0", Patterns::Integer(0, 10000),
+        "Continuation in the Coulomb coefficient F (only with 'Contact/"
+        "Friction coefficient' > 0): 0 solves every cycle with F from its "
+        "start; N > 0 solves each cycle first without friction (the "
+        "frictionless formulation, whose theta = 1 energy gives the exact "
+        "line search) and then with F k/N for k = 1 ... N, each stage "
+        "starting from the previous one's solution. Newton with friction "
+        "has no energy to globalise it, and on the paper's 3D plate it "
+        "wanders from a cold or nested start that the frictionless "
+        "iteration handles (doc/design.md). The cycle's iteration count "
+        "is the sum over its stages; on the first cycle the load steps "
+        "run in the frictionless stage.");
+      prm.declare_entry(
         "Nonmonotone window", "5", Patterns::Integer(0, 1000),
         "With the exact line search on the energy J (see 'Line search'), on "
         "the cycles after the first (nested iteration) and until the "
@@ -527,14 +540,17 @@ namespace NitscheContact
       prm.declare_entry(
         "Contact points per iteration", "false", Patterns::Bool(),
         "Also write contact_points-NN-iKKK.csv, in the format of 'Contact "
-        "points', at every iterate of the nonlinear solver on cycle NN: "
-        "KKK is the number of linear solves done on the cycle, so iKKK is "
-        "the iterate from which step KKK+1 starts and its log line is "
-        "'iteration KKK+1' (i000: the starting iterate, on a nested cycle "
-        "the previous cycle's solution carried over). The converged "
-        "iterate itself is contact_points-NN.csv ('Contact points'). For "
-        "studying how the contact status settles (parameters/"
-        "plot_contact_points.py --against); one file per iteration.");
+        "points', at every iterate of the nonlinear solver on cycle NN from "
+        "which a step is taken: KKK is the number of linear solves done "
+        "before, so iKKK is the start of the step that the log line "
+        "'iteration KKK+1' reports (i000: the starting iterate, on a nested "
+        "cycle the previous cycle's solution carried over). A cycle solved "
+        "in stages ('Load steps', 'Friction steps') numbers them: "
+        "contact_points-NN-sSS-iKKK.csv, SS = 01, 02, ... The converged "
+        "iterate, from which no step is taken, is contact_points-NN.csv "
+        "('Contact points = true'). For studying how the contact status "
+        "settles (parameters/plot_contact_points.py --against); one file "
+        "per iteration.");
       prm.declare_entry("Profile points", "101", Patterns::Integer(2, 100000),
                         "Number of points along the profile line.");
       prm.declare_entry("Field grid points", "0", Patterns::Integer(0, 2000),
@@ -701,6 +717,7 @@ namespace NitscheContact
       allow_non_convergence = prm.get_bool("Allow non-convergence");
       print_iterations      = prm.get_bool("Print iterations");
       load_steps            = prm.get_integer("Load steps");
+      friction_steps        = prm.get_integer("Friction steps");
       damping_after         = prm.get_integer("Damping after");
       nonmonotone_window    = prm.get_integer("Nonmonotone window");
       fast_line_search      = prm.get_bool("Fast line search");

@@ -64,6 +64,9 @@ namespace NitscheContact
     /// settled but the correction does not decrease: the round-off floor);
     /// empty otherwise.
     std::string                stagnation;
+    /// "-sSS" in the names of the per-iteration contact point files when a
+    /// cycle is solved in several stages (load or friction steps)
+    std::string                stage_suffix;
     dealii::ConditionalOStream pcout;
 
     struct CycleRecord

@@ -128,6 +128,16 @@ namespace NitscheContact
     virtual void
     set_load_factor(double factor) = 0;
 
+    /// Scale the Coulomb coefficient F of 'Contact/Friction coefficient' by
+    /// `scale` in [0, 1] for the following assemble() calls; scale = 0 is
+    /// the frictionless formulation (no tangential terms, the energy of
+    /// theta = 1). Used by the driver's friction continuation ('Nonlinear
+    /// solver/Friction steps'); only called when F > 0. Models without
+    /// friction (which reject F > 0) keep the default.
+    virtual void
+    set_friction_scale(double /*scale*/)
+    {}
+
     virtual std::uint64_t
     n_dofs() const = 0;
 

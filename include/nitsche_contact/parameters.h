@@ -120,6 +120,7 @@ namespace NitscheContact
     bool            allow_non_convergence  = false;
     bool            print_iterations       = true;
     unsigned int    load_steps             = 1;
+    unsigned int    friction_steps         = 0;
     unsigned int    damping_after          = 100000;
     unsigned int    nonmonotone_window     = 5;
     bool            fast_line_search       = true;

@@ -56,7 +56,8 @@ namespace NitscheContact
                   const Point<3>                  &x,
                   const double                     r,
                   const CommonParameters          &prm,
-                  const ObstacleSurface           &obstacle)
+                  const ObstacleSurface           &obstacle,
+                  const double                     friction)
     {
       Tensor<1, 3> u;
       Tensor<2, 3> grad;
@@ -75,7 +76,7 @@ namespace NitscheContact
       in.gap      = x[2] - obstacle.height(Point<2>(x[0], x[1]));
       in.r        = r;
       in.theta    = prm.theta;
-      in.friction = prm.friction;
+      in.friction = friction;
       return in;
     }
 
@@ -183,7 +184,8 @@ namespace NitscheContact
                                                 in.evaluation_points[q],
                                                 r,
                                                 prm,
-                                                obstacle);
+                                                obstacle,
+                                                prm.friction);
             const PointState st =
               evaluate_contact_point(pi, NonlinearScheme::newton);
             out[q](0) = -st.lambda_n;
@@ -393,6 +395,7 @@ namespace NitscheContact
           "raise 'Contact/Nitsche gamma0' (its coercivity bound is "
           "(1+theta)^2/4 nitsche_trace_constant) or use theta = -1"})
   {
+    friction = prm.friction;
     ph.enter_subsection("Elasticity");
     degree              = ph.get_integer("Polynomial degree");
     load_as_traction    = ph.get("Load applied as") == "top traction";
@@ -790,9 +793,34 @@ namespace NitscheContact
         }
     bulk_matrix.compress(VectorOperation::add);
     load.compress(VectorOperation::add);
+    assemble_theta_matrix();
+  }
 
+  void
+  ElasticityModel::set_friction_scale(const double scale)
+  {
+    const double f = prm.friction * scale;
+    if (f == friction)
+      return;
+    const bool tangential_terms_change = (f > 0.) != (friction > 0.);
+    friction = f;
+    // the tangential theta-terms are in theta_matrix exactly with F > 0
+    if (tangential_terms_change && dof_handler.has_active_dofs())
+      assemble_theta_matrix();
+  }
+
+  void
+  ElasticityModel::assemble_theta_matrix()
+  {
     if (prm.theta == 0.)
       return;
+    const unsigned int                   n = fe.n_dofs_per_cell();
+    FullMatrix<double>                   cell_matrix(n, n);
+    std::vector<types::global_dof_index> dofs(n);
+    std::vector<unsigned int>            comp(n);
+    for (unsigned int i = 0; i < n; ++i)
+      comp[i] = fe.system_to_component_index(i).first;
+    const double lambda = prm.lambda(), mu = prm.mu();
     // The theta-terms of every contact point (status independent).
     theta_matrix.copy_from(bulk_matrix);
     FEFaceValues<3> fvc(mapping, fe, contact_face_quadrature,
@@ -808,7 +836,7 @@ namespace NitscheContact
         for (unsigned int q = 0; q < contact_face_quadrature.size(); ++q)
           {
             shape_contact_data(fvc, q, comp, lambda, mu, shapes);
-            add_theta_terms(prm.theta / r, prm.friction > 0., shapes,
+            add_theta_terms(prm.theta / r, friction > 0., shapes,
                             fvc.JxW(q), nullptr, &cell_matrix, nullptr);
           }
         cell->get_dof_indices(dofs);
@@ -1028,7 +1056,8 @@ namespace NitscheContact
             const Tensor<1, 3> nrm = fvf.normal_vector(q);
             const PointInput in =
               contact_input(u_values[q], u_grads[q], nrm,
-                            fvf.quadrature_point(q), r, prm, obstacle);
+                            fvf.quadrature_point(q), r, prm, obstacle,
+                            friction);
             const PointState st = evaluate_contact_point(in, scheme);
             status.push_back(static_cast<unsigned char>(st.status));
             contact_energy += contact_energy_density(in, st) * fvf.JxW(q);
@@ -1045,7 +1074,7 @@ namespace NitscheContact
                                    with_matrix ? &cell_matrix : nullptr,
                                    cell_residual);
             if (prm.theta != 0.)
-              add_theta_terms(prm.theta / r, prm.friction > 0., shapes,
+              add_theta_terms(prm.theta / r, friction > 0., shapes,
                               -fvf.JxW(q), &in,
                               with_matrix ? &cell_matrix : nullptr,
                               &cell_residual);
@@ -1102,7 +1131,7 @@ namespace NitscheContact
     counts.hash      = Utilities::MPI::sum(counts.hash, comm);
     counts.residual_norm = residual.l2_norm();
     last_contact_energy = Utilities::MPI::sum(contact_energy, comm);
-    if (prm.friction == 0.)
+    if (friction == 0.)
       counts.n_stick = 0;
     return counts;
   }
@@ -1120,8 +1149,8 @@ namespace NitscheContact
           increment,
           residual,
           ReusedFactorization::change_of_newton_matrix(last_changed,
-                                                       prm.friction > 0.),
-          prm.has_energy());
+                                                       friction > 0.),
+          has_energy());
       }
     else
       {
@@ -1198,7 +1227,7 @@ namespace NitscheContact
   double
   ElasticityModel::energy() const
   {
-    if (!prm.has_energy())
+    if (!has_energy())
       return std::numeric_limits<double>::quiet_NaN();
     // 1/2 a(U,U) by element integrals: no cancellation between the large
     // through-thickness stiffness entries, unlike U.AU.
@@ -1233,7 +1262,7 @@ namespace NitscheContact
   double
   ElasticityModel::energy_slope() const
   {
-    if (!prm.has_energy())
+    if (!has_energy())
       return std::numeric_limits<double>::quiet_NaN();
     // `residual` holds -R(U) on the unconstrained rows
     return -(residual * increment);
@@ -1242,7 +1271,7 @@ namespace NitscheContact
   bool
   ElasticityModel::prepare_line_search()
   {
-    if (!prm.has_energy())
+    if (!has_energy())
       return false;
     // Along U(t) = U_base + t dU the residual tested with dU is
     //   phi'(t) = dU.(C U_base - F) + t dU.C dU
@@ -1300,9 +1329,9 @@ namespace NitscheContact
             const Tensor<1, 3> nrm = fvf.normal_vector(q);
             const Point<3>    &x   = fvf.quadrature_point(q);
             const PointInput   in0 = contact_input(
-              u0_values[q], u0_grads[q], nrm, x, r, prm, obstacle);
+              u0_values[q], u0_grads[q], nrm, x, r, prm, obstacle, friction);
             const PointInput ind = contact_input(
-              du_values[q], du_grads[q], nrm, x, r, prm, obstacle);
+              du_values[q], du_grads[q], nrm, x, r, prm, obstacle, friction);
             const double s0 = in0.sigma_n - r * (in0.u_n - in0.gap);
             const double ds = ind.sigma_n - r * ind.u_n;
             const double coefficient =
@@ -1410,7 +1439,7 @@ namespace NitscheContact
             const Point<3>  &x  = fvf.quadrature_point(q);
             const PointInput in = contact_input(
               u_values[q], u_grads[q], fvf.normal_vector(q), x, r, prm,
-              obstacle);
+              obstacle, friction);
             points.push_back(make_contact_point_record(
               in, evaluate_contact_point(in, NonlinearScheme::newton),
               x[0], x[1], centre[0], centre[1], fvf.JxW(q)));
@@ -1475,7 +1504,8 @@ namespace NitscheContact
             const Tensor<1, 3> nrm = fvf.normal_vector(q);
             const PointInput in =
               contact_input(u_values[q], u_grads[q], nrm,
-                            fvf.quadrature_point(q), r, prm, obstacle);
+                            fvf.quadrature_point(q), r, prm, obstacle,
+                            friction);
             const PointState st =
               evaluate_contact_point(in, NonlinearScheme::newton);
             const double JxW = fvf.JxW(q);

@@ -202,6 +202,7 @@ namespace NitscheContact
         "more otherwise; doc/mindlin.md) or use theta = -1"})
     , obstacle(common)
   {
+    friction = common.friction;
     if (Utilities::MPI::n_mpi_processes(comm) > 1)
       throw InputError(
         "invalid value 'mindlin' for parameter 'Model' on " +
@@ -539,7 +540,7 @@ namespace NitscheContact
               const ShapeContactData &si = contact_shapes[q][i],
                                      &sj = contact_shapes[q][j];
               double v = si.sigma_n * sj.sigma_n;
-              if (prm.friction > 0.)
+              if (friction > 0.)
                 v += si.sigma_t * sj.sigma_t;
               theta_matrices[q](i, j) = -t_over_r * v * contact_JxW[q];
             }
@@ -609,6 +610,24 @@ namespace NitscheContact
       }
     if (assembled_matrix)
       constant_matrix.compress(VectorOperation::add);
+  }
+
+
+
+  void
+  MindlinModel::set_friction_scale(const double scale)
+  {
+    const double f = prm.friction * scale;
+    if (f == friction)
+      return;
+    const bool tangential_terms_change = (f > 0.) != (friction > 0.);
+    friction = f;
+    // the tangential theta-terms are in the constant part exactly with F > 0
+    if (tangential_terms_change && dof_handler.has_active_dofs())
+      {
+        precompute_cell_data();
+        assemble_constant_part();
+      }
   }
 
 
@@ -684,7 +703,7 @@ namespace NitscheContact
     in.normal[2] = -1.;
     in.r         = r;
     in.theta     = prm.theta;
-    in.friction  = prm.friction;
+    in.friction  = friction;
     return in;
   }
 
@@ -696,7 +715,7 @@ namespace NitscheContact
     ContactCounts counts;
     const unsigned int n  = fe.n_dofs_per_cell();
     const unsigned int nq = contact_quadrature.size();
-    const bool with_energy = prm.has_energy();
+    const bool with_energy = has_energy();
     double     contact_energy = 0.;
     std::vector<types::global_dof_index> dofs(n);
     Vector<double>     u(n), cell_residual(n), tmp(n);
@@ -1161,8 +1180,8 @@ namespace NitscheContact
       x,
       b,
       ReusedFactorization::change_of_newton_matrix(last_changed,
-                                                   prm.friction > 0.),
-      prm.has_energy());
+                                                   friction > 0.),
+      has_energy());
     const double *xp = x.trilinos_vector()[0];
     std::copy(xp, xp + increment.size(), increment.begin());
     constraints.distribute(increment);
@@ -1203,7 +1222,7 @@ namespace NitscheContact
   double
   MindlinModel::energy_slope() const
   {
-    if (!prm.has_energy())
+    if (!has_energy())
       return std::numeric_limits<double>::quiet_NaN();
     // `residual` holds -R(U) (condensed), `increment` the last Newton correction
     return -(residual * increment);
@@ -1214,7 +1233,7 @@ namespace NitscheContact
   double
   MindlinModel::energy() const
   {
-    if (!prm.has_energy())
+    if (!has_energy())
       return std::numeric_limits<double>::quiet_NaN();
     // 1/2 a(U,U) from the strains at the Gauss points (no cancellation
     // between the large shear entries of the stiffness matrix, whose
@@ -1407,14 +1426,14 @@ namespace NitscheContact
                   ++n_slip;
                 else
                   ++n_stick;
-                if (prm.friction > 0.)
+                if (friction > 0.)
                   {
                     tangential_force += st.lambda_t.norm() * JxW;
                     tangential_resultant += st.lambda_t * JxW;
                     max_ratio =
                       std::max(max_ratio,
                                st.lambda_t.norm() /
-                                 (prm.friction * (-st.lambda_n)));
+                                 (friction * (-st.lambda_n)));
                   }
               }
           }
@@ -1491,7 +1510,7 @@ namespace NitscheContact
     res.extra.emplace_back("max_membrane_displacement", max_membrane);
     res.extra.emplace_back("stick_points", n_stick);
     res.extra.emplace_back("slip_points", n_slip);
-    if (prm.friction > 0.)
+    if (friction > 0.)
       {
         res.extra.emplace_back("tangential_force", tangential_force);
         res.extra.emplace_back("tangential_resultant_x",

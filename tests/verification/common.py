@@ -3,6 +3,7 @@ text and return the parsed summary.json. Each test script asserts numbers
 against an independent source and exits non-zero on failure."""
 import argparse
 import json
+import shutil
 import os
 import subprocess
 import sys
@@ -21,6 +22,8 @@ def run(args, name, prm_text, np=1, expect_status=0):
     run the program, and return (summary dict or None, stdout+stderr)."""
     os.makedirs(args.workdir, exist_ok=True)
     outdir = os.path.join(args.workdir, name)
+    # no files of an earlier run may pass for this run's output
+    shutil.rmtree(outdir, ignore_errors=True)
     prm_file = os.path.join(args.workdir, name + ".prm")
     with open(prm_file, "w") as f:
         f.write(prm_text)

@@ -47,6 +47,8 @@ namespace NitscheContact
     {
       load_factor = factor;
     }
+    void
+    set_friction_scale(double scale) override;
     std::uint64_t
     n_dofs() const override;
     double
@@ -118,6 +120,9 @@ namespace NitscheContact
     /// theta is coercive for gamma0 > (1+theta)^2/4 C_n.
     double
     trace_constant() const;
+    /// theta_matrix from bulk_matrix and the theta-terms of the F in use
+    void
+    assemble_theta_matrix();
     double trace_constant_value = 0.;
 
     const CommonParameters &prm;
@@ -180,6 +185,15 @@ namespace NitscheContact
 
     std::vector<unsigned char> previous_status;
     double                     load_factor = 1.;
+    /// F in use: 'Contact/Friction coefficient' times the scale of the
+    /// driver's friction continuation
+    double                     friction = 0.;
+    /// theta = 1 and no friction in use: the residual is the gradient of J
+    bool
+    has_energy() const
+    {
+      return prm.theta == 1. && friction == 0.;
+    }
     double                     last_contact_energy = 0.;
     double                     relative_residual   = 0.; ///< |R|/|AU| at postprocess
     unsigned long last_changed = 0; ///< status changes of the last matrix

@@ -86,6 +86,8 @@ namespace NitscheContact
     {
       load_factor = factor;
     }
+    void
+    set_friction_scale(double scale) override;
     double
     energy() const override;
     double
@@ -266,6 +268,15 @@ namespace NitscheContact
     /// Contact part of energy() at the iterate of the last assemble().
     double last_contact_energy = 0.;
     double                     load_factor = 1.; ///< load stepping
+    /// F in use: 'Contact/Friction coefficient' times the scale of the
+    /// driver's friction continuation (the membrane unknowns stay on)
+    double                     friction = 0.;
+    /// theta = 1 and no friction in use: the residual is the gradient of J
+    bool
+    has_energy() const
+    {
+      return prm.theta == 1. && friction == 0.;
+    }
   };
 } // namespace NitscheContact
 
