@@ -64,6 +64,18 @@ namespace NitscheContact
     }
   };
 
+  /// For ContactModel::set_friction_scale(): set `friction` (the F in use)
+  /// to coefficient * scale; true when the tangential terms appear or
+  /// disappear with it, so that the model rebuilds what holds them.
+  inline bool
+  scale_friction(double &friction, const double coefficient, const double scale)
+  {
+    const double f        = coefficient * scale;
+    const bool   switched = (f > 0.) != (friction > 0.);
+    friction              = f;
+    return switched;
+  }
+
   /// The record of a point from the kernel's input and state there.
   inline ContactPointRecord
   make_contact_point_record(const PointInput  &in,

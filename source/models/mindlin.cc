@@ -617,13 +617,9 @@ namespace NitscheContact
   void
   MindlinModel::set_friction_scale(const double scale)
   {
-    const double f = prm.friction * scale;
-    if (f == friction)
-      return;
-    const bool tangential_terms_change = (f > 0.) != (friction > 0.);
-    friction = f;
     // the tangential theta-terms are in the constant part exactly with F > 0
-    if (tangential_terms_change && dof_handler.has_active_dofs())
+    if (scale_friction(friction, prm.friction, scale) &&
+        dof_handler.has_active_dofs())
       {
         precompute_cell_data();
         assemble_constant_part();
