@@ -84,6 +84,33 @@ namespace NitscheContact
     /// Boundary id of the contact face (bottom, x3 = -t/2).
     static constexpr dealii::types::boundary_id contact_id = 4;
 
+    /// For the finite-difference checks (tests/unit/model_consistency):
+    /// the current iterate U (may be modified; assemble() evaluates at it;
+    /// constrained entries must satisfy the constraints), -R(U) of the last
+    /// assemble() (zero on constrained rows), and y = K x with the matrix
+    /// of the last assemble(scheme, true).
+    dealii::TrilinosWrappers::MPI::Vector &
+    iterate()
+    {
+      return solution;
+    }
+    const dealii::TrilinosWrappers::MPI::Vector &
+    negative_residual() const
+    {
+      return residual;
+    }
+    void
+    jacobian_vmult(dealii::TrilinosWrappers::MPI::Vector       &y,
+                   const dealii::TrilinosWrappers::MPI::Vector &x) const
+    {
+      system_matrix.vmult(y, x);
+    }
+    const dealii::AffineConstraints<double> &
+    get_constraints() const
+    {
+      return constraints;
+    }
+
   private:
     /// The mesh of a cycle, in the empty triangulation: the coarse box mesh
     /// ('Subdivisions', with the in-plane ones times 2^cycle unless 'Refine
