@@ -428,7 +428,7 @@ namespace NitscheContact
                               std::numeric_limits<double>::quiet_NaN() :
                               relative);
         const std::size_t window = 5;
-        if (prm.friction == 0. && relatives.size() > window &&
+        if (stage_friction == 0. && relatives.size() > window &&
             history.size() > window &&
             std::none_of(relatives.end() - window - 1,
                          relatives.end(),
@@ -540,8 +540,24 @@ namespace NitscheContact
               }
             if (!stages[s].label.empty())
               pcout << "  " << stages[s].label << std::endl;
-            records.back().iterations +=
-              solve_nonlinear(model, cycle, times, converged);
+            stage_friction = prm.friction * stages[s].friction_scale;
+            try
+              {
+                records.back().iterations +=
+                  solve_nonlinear(model, cycle, times, converged);
+              }
+            catch (const ConvergenceFailure &e)
+              {
+                if (n_friction == 0 || stages[s].friction_scale > 0.)
+                  throw;
+                // e.g. a tangential rigid motion that only friction holds
+                throw ConvergenceFailure(
+                  std::string(e.what()) +
+                  " [in the frictionless stage of 'Nonlinear solver/Friction "
+                  "steps' = " + std::to_string(n_friction) +
+                  ": if only friction restrains the body tangentially, that "
+                  "stage is singular; set 'Friction steps = 0']");
+              }
             if (!converged)
               break;
           }

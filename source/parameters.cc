@@ -411,7 +411,9 @@ namespace NitscheContact
         "the round-off floor) stops early and says so.");
       prm.declare_entry("Maximum iterations", "50",
                         Patterns::Integer(1, 100000),
-                        "Iteration limit per cycle.");
+                        "Iteration limit per cycle (per stage when a cycle "
+                        "is solved in stages: 'Load steps', 'Friction "
+                        "steps').");
       prm.declare_entry(
         "Line search", "true", Patterns::Bool(),
         "Globalisation of the Newton steps. When the formulation has an "
@@ -450,7 +452,9 @@ namespace NitscheContact
         "wanders from a cold or nested start that the frictionless "
         "iteration handles (doc/design.md). The cycle's iteration count "
         "is the sum over its stages; on the first cycle the load steps "
-        "run in the frictionless stage.");
+        "run in the frictionless stage. Not for bodies whose tangential "
+        "rigid motion only friction holds (free edges, a block pushed "
+        "sideways): the frictionless stage is singular there.");
       prm.declare_entry(
         "Nonmonotone window", "5", Patterns::Integer(0, 1000),
         "With the exact line search on the energy J (see 'Line search'), on "
@@ -542,7 +546,8 @@ namespace NitscheContact
         "Also write contact_points-NN-iKKK.csv, in the format of 'Contact "
         "points', at every iterate of the nonlinear solver on cycle NN from "
         "which a step is taken: KKK is the number of linear solves done "
-        "before, so iKKK is the start of the step that the log line "
+        "before (in the stage, for a cycle solved in stages), so iKKK is "
+        "the start of the step that the log line "
         "'iteration KKK+1' reports (i000: the starting iterate, on a nested "
         "cycle the previous cycle's solution carried over). A cycle solved "
         "in stages ('Load steps', 'Friction steps') numbers them: "

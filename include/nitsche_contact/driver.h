@@ -67,6 +67,9 @@ namespace NitscheContact
     /// "-sSS" in the names of the per-iteration contact point files when a
     /// cycle is solved in several stages (load or friction steps)
     std::string                stage_suffix;
+    /// the Coulomb coefficient of the stage being solved (0 in the
+    /// frictionless stage of 'Friction steps')
+    double                     stage_friction = 0.;
     dealii::ConditionalOStream pcout;
 
     struct CycleRecord

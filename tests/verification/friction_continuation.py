@@ -73,7 +73,7 @@ for record, text in zip(summary["cycles"], cycle_logs):
                                           for k in range(1, steps + 1)]
     check(labels == expected, what + ": stages %s" % labels)
     stage_logs = re.split(r"(?m)^  friction step \d+/\d+: .*$", text)[1:]
-    counts = [len(re.findall(r"(?m)^\s+iteration\s+\d+:", s)) for s in stage_logs]
+    counts = [len(re.findall(r"(?m)^ +iteration +\d+:", s)) for s in stage_logs]
     check(len(stage_logs) == steps + 1 and
           all(re.search(r"(?m)^\s+converged", s) for s in stage_logs),
           what + ": every stage ends with a convergence line")
@@ -101,6 +101,64 @@ for record, text in zip(summary["cycles"], cycle_logs):
           % (resultant, record["contact_force"]))
     check(extra_data["relative_residual"] <= 1e-4,
           what + ": equilibrium |R|/|AU| = %.3g" % extra_data["relative_residual"])
+
+# 2b. the frictionless stage is the frictionless problem: its iteration
+# lines on cycle 0 are those of a run with F = 0 (same numbers to every
+# printed digit; only the stick/slip counts are printed with F > 0)
+def iteration_lines(text):
+    return [re.sub(r" \(stick \d+, slip \d+\)", "", line)
+            for line in re.findall(r"(?m)^ +iteration +\d+:.*$", text)]
+
+
+frictionless, log0 = run(args, "elasticity_frictionless",
+                         prm_from("paper_3d.prm",
+                                  [(k, "0" if k == "Friction coefficient" else v)
+                                   for k, v in changes_3d]))
+stage0 = re.split(r"(?m)^  friction step \d+/\d+: .*$", cycle_logs[0])[1]
+reference = iteration_lines(re.split(r"(?m)^Cycle \d+:", log0)[1])
+check(iteration_lines(stage0) == reference and len(reference) > 10,
+      "3D cycle 0: the frictionless stage repeats the %d iteration lines of the run "
+      "with F = 0" % len(reference))
+
+# 2c. a body that only friction holds tangentially (the block of
+# elasticity_friction.py: free x-faces, tangential top traction) has no
+# frictionless solution: the continuation must say why it fails
+BLOCK = """
+set Model = elasticity
+subsection Geometry
+  set Length x = 2
+  set Length y = 1
+  set Thickness = 0.2
+  set Edge conditions = free, free, symmetry, symmetry
+  set Subdivisions = 4, 2, 1
+end
+subsection Material
+  set Young's modulus = 100
+end
+subsection Load
+  set Transverse load = -1
+end
+subsection Obstacle
+  set Level = -0.1
+end
+subsection Contact
+  set Friction coefficient = 0.5
+end
+subsection Elasticity
+  set Polynomial degree = 1
+  set Load applied as = top traction
+  set Top tangential traction = 0.25; 0
+end
+subsection Nonlinear solver
+  set Friction steps = 2
+end
+"""
+_, log = run(args, "block_steps", BLOCK, expect_status=2)
+check("frictionless stage of 'Nonlinear solver/Friction steps' = 2" in log and
+      "Friction steps = 0" in log,
+      "block held tangentially by friction only: the failure names 'Friction steps'")
+_, log = run(args, "block_direct", BLOCK.replace("Friction steps = 2", "Friction steps = 0"))
+check("converged" in log, "the same block converges without the continuation")
 
 # 3. Mindlin: the continuation reaches the direct solution
 results = {}
