@@ -33,7 +33,6 @@ run's .prm, .log and output directory.
 import argparse
 import csv
 import json
-import math
 import os
 import subprocess
 import sys

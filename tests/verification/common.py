@@ -5,6 +5,7 @@ import argparse
 import json
 import shutil
 import os
+import re
 import subprocess
 import sys
 
@@ -42,6 +43,20 @@ def run(args, name, prm_text, np=1, expect_status=0):
         with open(path) as f:
             summary = json.load(f)
     return summary, proc.stdout
+
+
+def shipped_prm(name, replacements, extra=""):
+    """The text of parameters/<name> (or of the file at the absolute path
+    name) with 'set <entry> = value' replaced for each (entry, value) of
+    replacements (each entry must occur exactly once), followed by extra."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    path = name if os.path.isabs(name) else os.path.join(here, "..", "..", "parameters", name)
+    text = open(path).read()
+    for pattern, value in replacements:
+        text, n = re.subn(r"(?m)^(\s*set %s\s*=).*$" % re.escape(pattern),
+                          lambda m: m.group(1) + " " + value, text)
+        check(n == 1, "%s: one entry '%s'" % (name, pattern))
+    return text + extra
 
 
 failures = []

@@ -27,7 +27,7 @@ Finally parameters/plot_contact_points.py draws two of the files, and
 with --against the status changes of two iterates."""
 import csv, os, re, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import parse_args, run, check, close, finish
+from common import shipped_prm, parse_args, run, check, close, finish
 
 args = parse_args()
 here = os.path.dirname(os.path.abspath(__file__))
@@ -35,14 +35,10 @@ parameters = os.path.join(here, "..", "..", "parameters")
 
 
 def prm_from(name, replacements, per_iteration):
-    text = open(os.path.join(parameters, name)).read()
-    for pattern, value in replacements:
-        text, n = re.subn(r"(?m)^(\s*set %s\s*=).*$" % re.escape(pattern),
-                          lambda m: m.group(1) + " " + value, text)
-        check(n == 1, "%s: one entry '%s'" % (name, pattern))
-    return text + ("\nsubsection Output\n  set Contact points = true\n"
-                   "  set Contact points per iteration = %s\nend\n"
-                   % ("true" if per_iteration else "false"))
+    return shipped_prm(name, replacements,
+                       "\nsubsection Output\n  set Contact points = true\n"
+                       "  set Contact points per iteration = %s\nend\n"
+                       % ("true" if per_iteration else "false"))
 
 
 def iteration_log(log):

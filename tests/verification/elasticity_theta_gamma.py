@@ -32,7 +32,7 @@ number of active quadrature points (the area) drops while the force stays
 accurate (gamma0 = 100: area 0.0032 vs 0.0078 for gamma0 = 10).
 Runtime ~25 s (CPU) in Release.
 """
-from common import parse_args, run, check, finish
+from common import parse_args, check, finish
 
 args = parse_args()
 

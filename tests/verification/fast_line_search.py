@@ -17,21 +17,16 @@ deflections agree to 1e-5 (3D, Newton tolerance 1e-6) or 1e-8 (Kirchhoff),
 the active sets to 0.5 % (compare_cycle)."""
 import os, re, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import parse_args, run, check, compare_cycle, finish
+from common import shipped_prm, parse_args, run, check, compare_cycle, finish
 
 args = parse_args()
 here = os.path.dirname(os.path.abspath(__file__))
-parameters = os.path.join(here, "..", "..", "parameters")
 
 
 def prm_from(name, replacements, fast):
-    text = open(name if os.path.isabs(name) else os.path.join(parameters, name)).read()
-    for pattern, value in replacements:
-        text, n = re.subn(r"(?m)^(\s*set %s\s*=).*$" % re.escape(pattern),
-                          lambda m: m.group(1) + " " + value, text)
-        check(n == 1, "%s: one entry '%s'" % (name, pattern))
-    return text + ("\nsubsection Nonlinear solver\n  set Fast line search = %s\n"
-                   "  set Print iterations = true\nend\n" % ("true" if fast else "false"))
+    return shipped_prm(name, replacements,
+                       "\nsubsection Nonlinear solver\n  set Fast line search = %s\n"
+                       "  set Print iterations = true\nend\n" % ("true" if fast else "false"))
 
 
 def iteration_lines(out, cycle):

@@ -28,20 +28,13 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import parse_args, run, check, close, finish
+from common import shipped_prm, parse_args, run, check, close, finish
 
 args = parse_args()
-here = os.path.dirname(os.path.abspath(__file__))
-parameters = os.path.join(here, "..", "..", "parameters")
 
 
 def prm_from(name, replacements, extra=""):
-    text = open(os.path.join(parameters, name)).read()
-    for pattern, value in replacements:
-        text, n = re.subn(r"(?m)^(\s*set %s\s*=).*$" % re.escape(pattern),
-                          lambda m: m.group(1) + " " + value, text)
-        check(n == 1, "%s: one entry '%s'" % (name, pattern))
-    return text + extra
+    return shipped_prm(name, replacements, extra)
 
 
 F = 0.2

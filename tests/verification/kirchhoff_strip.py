@@ -8,7 +8,7 @@ position (from the contact area) and total reaction on 3 nested meshes,
 each within a tolerance and (for the reaction) improving with h."""
 import os, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import parse_args, run, close, check, finish
+from common import parse_args, run, check, finish
 from kirchhoff_lib.plate import plate_prm
 
 args = parse_args()

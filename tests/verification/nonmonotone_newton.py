@@ -20,21 +20,15 @@ case it must also save iterations on the nested cycles overall, which is
 what it is for."""
 import os, re, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import parse_args, run, check, compare_cycle, finish
+from common import shipped_prm, parse_args, run, check, compare_cycle, finish
 
 args = parse_args()
-here = os.path.dirname(os.path.abspath(__file__))
-parameters = os.path.join(here, "..", "..", "parameters")
 
 
 def prm_from(name, replacements, window):
-    text = open(os.path.join(parameters, name)).read()
-    for pattern, value in replacements:
-        text, n = re.subn(r"(?m)^(\s*set %s\s*=).*$" % re.escape(pattern),
-                          lambda m: m.group(1) + " " + value, text)
-        check(n == 1, "%s: one entry '%s'" % (name, pattern))
-    return text + ("\nsubsection Nonlinear solver\n  set Nonmonotone window = %d\n"
-                   "  set Print iterations = true\nend\n" % window)
+    return shipped_prm(name, replacements,
+                       "\nsubsection Nonlinear solver\n  set Nonmonotone window = %d\n"
+                       "  set Print iterations = true\nend\n" % window)
 
 
 mindlin_changes = [("Number of cycles", "5"), ("Subdivisions", "10, 10"),
