@@ -478,21 +478,6 @@ namespace NitscheContact
 
     for (unsigned int cycle = 0; cycle < prm.n_cycles; ++cycle)
       {
-        CycleRecord rec;
-        rec.cycle = cycle;
-        Timer timer;
-        model.setup_cycle(cycle);
-        rec.times.setup = timer.wall_time();
-        rec.n_dofs      = model.n_dofs();
-        rec.h           = model.mesh_size();
-        records.push_back(rec);
-
-        pcout << "Cycle " << cycle << ": " << rec.n_dofs << " DoFs, h = "
-              << rec.h << std::endl;
-
-        bool        converged = false;
-        PhaseTimes &times     = records.back().times;
-        records.back().iterations = 0;
         // The stages of the cycle: load steps on the first cycle, then the
         // friction continuation (each stage from the previous solution).
         struct Stage
@@ -527,6 +512,25 @@ namespace NitscheContact
                                     number_to_string(scale * prm.friction)});
               }
           }
+        CycleRecord rec;
+        rec.cycle = cycle;
+        Timer timer;
+        // the first stage's data before the setup, which builds the
+        // constant parts with them
+        model.set_load_factor(stages[0].load_factor);
+        model.set_friction_scale(stages[0].friction_scale);
+        model.setup_cycle(cycle);
+        rec.times.setup = timer.wall_time();
+        rec.n_dofs      = model.n_dofs();
+        rec.h           = model.mesh_size();
+        records.push_back(rec);
+
+        pcout << "Cycle " << cycle << ": " << rec.n_dofs << " DoFs, h = "
+              << rec.h << std::endl;
+
+        bool        converged = false;
+        PhaseTimes &times     = records.back().times;
+        records.back().iterations = 0;
         for (unsigned int s = 0; s < stages.size(); ++s)
           {
             model.set_load_factor(stages[s].load_factor);

@@ -799,15 +799,16 @@ namespace NitscheContact
   void
   ElasticityModel::set_friction_scale(const double scale)
   {
-    // the tangential theta-terms are in theta_matrix exactly with F > 0
-    if (scale_friction(friction, prm.friction, scale) &&
-        dof_handler.has_active_dofs())
-      assemble_theta_matrix();
+    // the tangential theta-terms are in theta_matrix exactly with F > 0:
+    // rebuilt by the next setup_cycle() or assemble(), whichever is first
+    if (scale_friction(friction, prm.friction, scale))
+      theta_matrix_stale = true;
   }
 
   void
   ElasticityModel::assemble_theta_matrix()
   {
+    theta_matrix_stale = false;
     if (prm.theta == 0.)
       return;
     const unsigned int                   n = fe.n_dofs_per_cell();
@@ -1004,6 +1005,8 @@ namespace NitscheContact
   ElasticityModel::assemble(const NonlinearScheme scheme,
                             const bool            with_matrix)
   {
+    if (theta_matrix_stale)
+      assemble_theta_matrix();
     ghosted = solution;
     // The constant matrix C holds the stiffness A and, for theta != 0, the
     // theta-terms of every contact point, which are the whole contact

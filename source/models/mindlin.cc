@@ -571,7 +571,9 @@ namespace NitscheContact
   MindlinModel::assemble_constant_part()
   {
     // Constant matrix: bulk stiffness + theta-terms at all contact points;
-    // load vector with 2x2 Gauss (exact for bilinear loads).
+    // load vector with 2x2 Gauss (exact for bilinear loads). (Called after
+    // precompute_cell_data(), which holds the theta-terms per point.)
+    constant_part_stale = false;
     if (assembled_matrix)
       constant_matrix = 0.;
     load = 0.;
@@ -617,13 +619,10 @@ namespace NitscheContact
   void
   MindlinModel::set_friction_scale(const double scale)
   {
-    // the tangential theta-terms are in the constant part exactly with F > 0
-    if (scale_friction(friction, prm.friction, scale) &&
-        dof_handler.has_active_dofs())
-      {
-        precompute_cell_data();
-        assemble_constant_part();
-      }
+    // the tangential theta-terms are in the constant part exactly with F > 0:
+    // rebuilt by the next setup_cycle() or assemble(), whichever is first
+    if (scale_friction(friction, prm.friction, scale))
+      constant_part_stale = true;
   }
 
 
@@ -708,6 +707,11 @@ namespace NitscheContact
   ContactCounts
   MindlinModel::assemble(const NonlinearScheme scheme, const bool with_matrix)
   {
+    if (constant_part_stale)
+      {
+        precompute_cell_data();
+        assemble_constant_part();
+      }
     ContactCounts counts;
     const unsigned int n  = fe.n_dofs_per_cell();
     const unsigned int nq = contact_quadrature.size();

@@ -215,6 +215,8 @@ namespace NitscheContact
     /// F in use: 'Contact/Friction coefficient' times the scale of the
     /// driver's friction continuation
     double                     friction = 0.;
+    /// friction switched on or off since theta_matrix was built
+    bool                       theta_matrix_stale = false;
     /// theta = 1 and no friction in use: the residual is the gradient of J
     bool
     has_energy() const

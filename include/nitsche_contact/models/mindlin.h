@@ -271,6 +271,8 @@ namespace NitscheContact
     /// F in use: 'Contact/Friction coefficient' times the scale of the
     /// driver's friction continuation (the membrane unknowns stay on)
     double                     friction = 0.;
+    /// friction switched on or off since the constant part was built
+    bool                       constant_part_stale = false;
     /// theta = 1 and no friction in use: the residual is the gradient of J
     bool
     has_energy() const
