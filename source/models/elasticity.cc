@@ -796,6 +796,18 @@ namespace NitscheContact
     assemble_theta_matrix();
   }
 
+  PointInput
+  ElasticityModel::face_point_input(
+    const FEFaceValues<3>           &fvf,
+    const unsigned int               q,
+    const Vector<double>            &u_value,
+    const std::vector<Tensor<1, 3>> &u_gradient,
+    const double                     r) const
+  {
+    return contact_input(u_value, u_gradient, fvf.normal_vector(q),
+                         fvf.quadrature_point(q), r, prm, obstacle, friction);
+  }
+
   void
   ElasticityModel::set_friction_scale(const double scale)
   {
@@ -1052,11 +1064,8 @@ namespace NitscheContact
         bool any_active = false;
         for (unsigned int q = 0; q < face_quadrature.size(); ++q)
           {
-            const Tensor<1, 3> nrm = fvf.normal_vector(q);
             const PointInput in =
-              contact_input(u_values[q], u_grads[q], nrm,
-                            fvf.quadrature_point(q), r, prm, obstacle,
-                            friction);
+              face_point_input(fvf, q, u_values[q], u_grads[q], r);
             const PointState st = evaluate_contact_point(in, scheme);
             status.push_back(static_cast<unsigned char>(st.status));
             contact_energy += contact_energy_density(in, st) * fvf.JxW(q);
@@ -1436,9 +1445,8 @@ namespace NitscheContact
         for (unsigned int q = 0; q < nq; ++q)
           {
             const Point<3>  &x  = fvf.quadrature_point(q);
-            const PointInput in = contact_input(
-              u_values[q], u_grads[q], fvf.normal_vector(q), x, r, prm,
-              obstacle, friction);
+            const PointInput in =
+              face_point_input(fvf, q, u_values[q], u_grads[q], r);
             points.push_back(make_contact_point_record(
               in, evaluate_contact_point(in, NonlinearScheme::newton),
               x[0], x[1], centre[0], centre[1], fvf.JxW(q)));
@@ -1500,11 +1508,8 @@ namespace NitscheContact
         fvf.get_function_gradients(ghosted, u_grads);
         for (unsigned int q = 0; q < face_quadrature.size(); ++q)
           {
-            const Tensor<1, 3> nrm = fvf.normal_vector(q);
             const PointInput in =
-              contact_input(u_values[q], u_grads[q], nrm,
-                            fvf.quadrature_point(q), r, prm, obstacle,
-                            friction);
+              face_point_input(fvf, q, u_values[q], u_grads[q], r);
             const PointState st =
               evaluate_contact_point(in, NonlinearScheme::newton);
             const double JxW = fvf.JxW(q);

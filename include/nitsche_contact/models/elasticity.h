@@ -150,6 +150,14 @@ namespace NitscheContact
     /// theta_matrix from bulk_matrix and the theta-terms of the F in use
     void
     assemble_theta_matrix();
+    /// The kernel input at contact face point q of fvf (reinit'ed) from the
+    /// displacement and its gradient there, with the F in use.
+    PointInput
+    face_point_input(const dealii::FEFaceValues<3>           &fvf,
+                     unsigned int                             q,
+                     const dealii::Vector<double>            &u_value,
+                     const std::vector<dealii::Tensor<1, 3>> &u_gradient,
+                     double                                   r) const;
     double trace_constant_value = 0.;
 
     const CommonParameters &prm;
