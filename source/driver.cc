@@ -20,6 +20,19 @@ namespace NitscheContact
 
   namespace
   {
+    /// file name part "-s03", "-i007": prefix and n with at least `digits`
+    /// digits (more if n needs them)
+    std::string
+    numbered(const char *prefix, const unsigned int n, const int digits)
+    {
+      std::ostringstream s;
+      s << prefix << std::setw(digits) << std::setfill('0') << n;
+      return s.str();
+    }
+  } // namespace
+
+  namespace
+  {
     /// A JSON number: finite values with 10 significant digits, else null.
     std::string
     json_number(const double x)
@@ -535,13 +548,8 @@ namespace NitscheContact
           {
             model.set_load_factor(stages[s].load_factor);
             model.set_friction_scale(stages[s].friction_scale);
-            stage_suffix.clear();
-            if (stages.size() > 1)
-              {
-                std::ostringstream suffix;
-                suffix << "-s" << std::setw(2) << std::setfill('0') << s + 1;
-                stage_suffix = suffix.str();
-              }
+            stage_suffix =
+              stages.size() > 1 ? numbered("-s", s + 1, 2) : std::string();
             if (!stages[s].label.empty())
               pcout << "  " << stages[s].label << std::endl;
             stage_friction = prm.friction * stages[s].friction_scale;
@@ -692,18 +700,6 @@ namespace NitscheContact
         std::filesystem::copy_options::overwrite_existing);
   }
 
-  namespace
-  {
-    /// "-i007": at least three digits (more above 999 iterations)
-    std::string
-    iterate_suffix(const int iterate)
-    {
-      std::ostringstream s;
-      s << "-i" << std::setw(3) << std::setfill('0') << iterate;
-      return s.str();
-    }
-  } // namespace
-
   void
   ContactDriver::write_contact_points(const ContactModel &model,
                                       const unsigned int  cycle,
@@ -716,7 +712,7 @@ namespace NitscheContact
     std::ofstream f(prm.output_directory + "/contact_points-" +
                     Utilities::int_to_string(cycle, 2) +
                     (iterate < 0 ? std::string() :
-                                   stage_suffix + iterate_suffix(iterate)) +
+                                   stage_suffix + numbered("-i", iterate, 3)) +
                     ".csv");
     f << "x,y,cell_x,cell_y,weight,status,s_n,sigma_n,gap,pressure\n"
       << std::setprecision(12);
