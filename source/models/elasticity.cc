@@ -1334,12 +1334,10 @@ namespace NitscheContact
         fvf.get_function_gradients(du, du_grads);
         for (unsigned int q = 0; q < nq; ++q)
           {
-            const Tensor<1, 3> nrm = fvf.normal_vector(q);
-            const Point<3>    &x   = fvf.quadrature_point(q);
-            const PointInput   in0 = contact_input(
-              u0_values[q], u0_grads[q], nrm, x, r, prm, obstacle, friction);
-            const PointInput ind = contact_input(
-              du_values[q], du_grads[q], nrm, x, r, prm, obstacle, friction);
+            const PointInput in0 =
+              face_point_input(fvf, q, u0_values[q], u0_grads[q], r);
+            const PointInput ind =
+              face_point_input(fvf, q, du_values[q], du_grads[q], r);
             const double s0 = in0.sigma_n - r * (in0.u_n - in0.gap);
             const double ds = ind.sigma_n - r * ind.u_n;
             const double coefficient =
