@@ -11,7 +11,8 @@
 # is 'gsv' (default: the .prm's rigid obstacle, GSV alpha*D = 1e-4) or
 # 'penalty' (alpha = 0, kappa = 1e-6: the pure penalty / elastic obstacle
 # of compliance 1e-6, doc/kirchhoff.md 5).
-# 6 cycles = 512x512 cells = 1,052,676 dofs (about 2.2 GB, a few minutes).
+# 6 cycles = 512x512 cells = 1,052,676 dofs (with 'multigrid' about 1.1 GB
+# and 25 s since session 9; with 'direct' about 2.2 GB and a few minutes).
 # Build in Release first.
 set -e
 here=$(cd "$(dirname "$0")/.." && pwd)

@@ -395,7 +395,10 @@ namespace NitscheContact
             if (prm.friction > 0.)
               line << " (stick " << c.n_stick << ", slip " << c.n_slip
                    << ")";
-            line << ", changed " << c.n_changed << std::scientific
+            line << ", changed " << c.n_changed;
+            if (c.n_reversed > 0)
+              line << ", reversed " << c.n_reversed;
+            line << std::scientific
                  << std::setprecision(3) << ", |dU|_a/|U|_a " << relative
                  << ", |R| " << c.residual_norm;
             if (linear_its > 0)
@@ -412,7 +415,10 @@ namespace NitscheContact
         // correction alone is not enough: at points entering contact the
         // penalty stiffness r makes corrections small while the residual
         // in the soft bending directions is not.)
-        if (relative <= prm.tolerance && c.n_changed == 0 && solves > 1)
+        // (A step with points on the stick branch instead of the law,
+        // n_reversed > 0, is not a Newton step of the law: not final.)
+        if (relative <= prm.tolerance && c.n_changed == 0 &&
+            c.n_reversed == 0 && solves > 1)
           {
             converged = true;
             // status and counts at the converged iterate
@@ -714,12 +720,22 @@ namespace NitscheContact
                     (iterate < 0 ? std::string() :
                                    stage_suffix + numbered("-i", iterate, 3)) +
                     ".csv");
-    f << "x,y,cell_x,cell_y,weight,status,s_n,sigma_n,gap,pressure\n"
+    f << "x,y,cell_x,cell_y,weight,status,s_n,sigma_n,gap,pressure,"
+         "slip_x,slip_y,slip_z,q_x,q_y,q_z,tau,lambda_t_x,lambda_t_y,lambda_t_z\n"
       << std::setprecision(12);
     for (const ContactPointRecord &p : points)
-      f << p.x << ',' << p.y << ',' << p.cell_x << ',' << p.cell_y << ','
-        << p.weight << ',' << p.status << ',' << p.s_n << ',' << p.sigma_n
-        << ',' << p.gap << ',' << p.pressure << '\n';
+      {
+        f << p.x << ',' << p.y << ',' << p.cell_x << ',' << p.cell_y << ','
+          << p.weight << ',' << p.status << ',' << p.s_n << ',' << p.sigma_n
+          << ',' << p.gap << ',' << p.pressure;
+        for (const Tensor<1, 3> *v : {&p.slip, &p.q})
+          for (unsigned int d = 0; d < 3; ++d)
+            f << ',' << (*v)[d];
+        f << ',' << p.tau;
+        for (unsigned int d = 0; d < 3; ++d)
+          f << ',' << p.lambda_t[d];
+        f << '\n';
+      }
   }
 
   void

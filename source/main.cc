@@ -161,9 +161,26 @@ main(int argc, char *argv[])
 
       CommonParameters common;
       common.parse(prm);
-      auto          model = create_model(common, prm, MPI_COMM_WORLD);
+      auto model = create_model(common, prm, MPI_COMM_WORLD);
+      // Some input is only found invalid when the mesh exists (a refinement
+      // box without cells, magnitudes that overflow the cell matrices),
+      // after the driver made the output directory: a directory this run
+      // created then goes again, so that no partial output remains.
+      const bool existed = std::filesystem::exists(common.output_directory);
       ContactDriver driver(common, MPI_COMM_WORLD);
-      driver.run(*model);
+      try
+        {
+          driver.run(*model);
+        }
+      catch (const InputError &)
+        {
+          if (root && !existed)
+            {
+              std::error_code ignored;
+              std::filesystem::remove_all(common.output_directory, ignored);
+            }
+          throw;
+        }
       if (root)
         {
           std::ofstream used(common.output_directory + "/used_parameters.prm");

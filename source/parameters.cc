@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <iomanip>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -43,61 +44,90 @@ namespace NitscheContact
              number_to_string(c[2]);
     }
 
-    /// A parsed function of (x, y) must be finite on the plate: evaluate it
-    /// on a 101 x 101 grid of [0, Lx] x [0, Ly] (a NaN or an infinity, e.g.
-    /// sqrt or log outside their domain, would otherwise spread through the
-    /// solution or, in a gap, silently switch the obstacle off there).
-    void
-    check_finite_on_plate(const Function<2>  &f,
-                          const std::string &entry,
-                          const std::string &expression,
-                          const double       length_x,
-                          const double       length_y)
-    {
-      const unsigned int n = 100;
-      for (unsigned int i = 0; i <= n; ++i)
-        for (unsigned int j = 0; j <= n; ++j)
-          {
-            const Point<2> p(length_x * i / n, length_y * j / n);
-            const double   v = f.value(p);
-            if (!std::isfinite(v))
-              bad_value(entry,
-                        expression,
-                        "it is " + number_to_string(v) + " at (" +
-                          number_to_string(p[0]) + ", " +
-                          number_to_string(p[1]) +
-                          "); it must be a finite number on the whole "
-                          "plate [0, " + number_to_string(length_x) +
-                          "] x [0, " + number_to_string(length_y) + "]");
-          }
-    }
+  } // namespace
 
-    std::vector<double>
-    parse_doubles(const std::string &text,
-                  const std::string &entry,
-                  const char         separator)
-    {
-      std::vector<double> out;
-      for (const auto &piece :
-           Utilities::split_string_list(text, separator))
-        {
+  template <int dim>
+  void
+  check_finite_on_plate(const Function<dim> &f,
+                        const std::string   &entry,
+                        const std::string   &expression,
+                        const double         length_x,
+                        const double         length_y,
+                        const double         thickness)
+  {
+    const unsigned int n = 100;
+    for (unsigned int i = 0; i <= n; ++i)
+      for (unsigned int j = 0; j <= n; ++j)
+        for (unsigned int k = 0; k < (dim == 3 ? 3u : 1u); ++k)
+          {
+            Point<dim> p;
+            p[0] = length_x * i / n;
+            p[1] = length_y * j / n;
+            if (dim == 3)
+              p[dim - 1] = 0.5 * thickness * (static_cast<double>(k) - 1.);
+            for (unsigned int c = 0; c < f.n_components; ++c)
+              {
+                const double v = f.value(p, c);
+                if (std::isfinite(v))
+                  continue;
+                std::string where = number_to_string(p[0]) + ", " +
+                                    number_to_string(p[1]);
+                if (dim == 3)
+                  where += ", " + number_to_string(p[dim - 1]);
+                bad_value(entry,
+                          expression,
+                          (f.n_components > 1 ?
+                             "component " + std::to_string(c + 1) + " " :
+                             std::string()) +
+                            "is " + number_to_string(v) + " at (" + where +
+                            "); it must be a finite number on the whole " +
+                            (dim == 3 ? std::string("body [0, ") :
+                                        std::string("plate [0, ")) +
+                            number_to_string(length_x) + "] x [0, " +
+                            number_to_string(length_y) + "]" +
+                            (dim == 3 ? " x [-t/2, t/2]" : ""));
+              }
+          }
+  }
+
+  template void
+  check_finite_on_plate<2>(const Function<2> &, const std::string &,
+                           const std::string &, double, double, double);
+  template void
+  check_finite_on_plate<3>(const Function<3> &, const std::string &,
+                           const std::string &, double, double, double);
+
+  std::vector<double>
+  parse_doubles(const std::string &text,
+                const std::string &entry,
+                const char         separator)
+  {
+    std::vector<double> out;
+    for (const auto &piece : Utilities::split_string_list(text, separator))
+      {
+        // decimal numbers only: std::stod also reads hexadecimal numbers,
+        // "nan" and "inf"
+        bool ok = !piece.empty() &&
+                  piece.find_first_of("xXnN") == std::string::npos;
+        double v = 0.;
+        if (ok)
           try
             {
-              std::size_t  pos = 0;
-              const double v   = std::stod(piece, &pos);
-              if (pos != piece.size())
-                throw std::invalid_argument(piece);
-              out.push_back(v);
+              std::size_t pos = 0;
+              v  = std::stod(piece, &pos);
+              ok = pos == piece.size() && std::isfinite(v);
             }
           catch (const std::exception &)
             {
-              bad_value(entry, text, "expected numbers separated by '" +
-                                       std::string(1, separator) + "'");
+              ok = false;
             }
-        }
-      return out;
-    }
-  } // namespace
+        if (!ok)
+          bad_value(entry, text, "expected finite decimal numbers separated by '" +
+                                   std::string(1, separator) + "'");
+        out.push_back(v);
+      }
+    return out;
+  }
 
   void
   bad_value(const std::string &entry,
@@ -484,6 +514,18 @@ namespace NitscheContact
         "Coulomb friction can wander without ever repeating a contact "
         "status (paper_mindlin_friction.prm does on its 16x16 cycle with "
         "0). 0: never.");
+      prm.declare_entry(
+        "Stick step on slip reversal", "true", Patterns::Bool(),
+        "Newton with Coulomb friction (elasticity and mindlin): at a point "
+        "that slips at this iterate and slipped the other way at the "
+        "previous one (q = sigma_t - r s_t reversed), take the step with "
+        "the stick branch Lambda_t = q of the law instead of its slip "
+        "linearisation, which has no stiffness along the slip and made "
+        "such points jump over their stick ball (radius F|Lambda_n|, "
+        "tiny against r |s_t|) back and forth in a two-iterate cycle. "
+        "The residual, hence the solution and the convergence test, is "
+        "that of the law; the log counts these points as 'reversed'. "
+        "false: the plain generalized Newton step everywhere.");
       prm.declare_entry("Print iterations", "true", Patterns::Bool(),
                         "One log line per nonlinear iteration.");
       prm.declare_entry(
@@ -650,7 +692,7 @@ namespace NitscheContact
       const auto f = make_parsed_function<2>(load_expression, load_constants,
                                              1, "Load/Transverse load");
       check_finite_on_plate(*f, "Load/Transverse load", load_expression,
-                            length_x, length_y);
+                            length_x, length_y, thickness);
     }
     prm.leave_subsection();
 
@@ -681,7 +723,7 @@ namespace NitscheContact
           const auto f = make_parsed_function<2>(obstacle_expression, "", 1,
                                                  "Obstacle/Height");
           check_finite_on_plate(*f, "Obstacle/Height", obstacle_expression,
-                                length_x, length_y);
+                                length_x, length_y, thickness);
         }
       obstacle_level_is_midplane =
         prm.get("Plate obstacle convention") == "mid-plane";
@@ -729,6 +771,7 @@ namespace NitscheContact
       damping_without_decrease =
         prm.get_integer("Damping after no decrease");
       reuse_factorization   = prm.get_bool("Reuse factorization");
+      stick_on_reversal     = prm.get_bool("Stick step on slip reversal");
       symmetric_factorization = prm.get_bool("Symmetric factorization");
     }
     prm.leave_subsection();
@@ -763,7 +806,7 @@ namespace NitscheContact
                         "';'");
             probes.emplace_back(c[0], c[1]);
           }
-      const std::vector<Point<2>> line =
+      std::vector<Point<2>> line =
         Utilities::trim(prm.get("Profile line")) == "centre line" ?
           std::vector<Point<2>>{Point<2>(0., centre[1]),
                                 Point<2>(length_x, centre[1])} :
@@ -771,19 +814,23 @@ namespace NitscheContact
       if (line.size() != 2)
         bad_value("Output/Profile line", prm.get("Profile line"),
                   "expected two points 'x0, y0; x1, y1'");
-      profile_start  = line[0];
-      profile_end    = line[1];
       profile_points = prm.get_integer("Profile points");
       field_points   = prm.get_integer("Field grid points");
       contact_points = prm.get_bool("Contact points");
       contact_points_per_iteration =
         prm.get_bool("Contact points per iteration");
       // the deflection is only defined on the plate (a point outside would
-      // be reported as NaN)
+      // be reported as NaN); points within round-off of an edge are moved
+      // onto it below
       const double slack = 1e-10 * std::max(length_x, length_y);
       const auto   on_plate = [&](const Point<2> &p) {
         return p[0] >= -slack && p[0] <= length_x + slack && p[1] >= -slack &&
                p[1] <= length_y + slack;
+      };
+      const auto full_precision = [](const double x) {
+        std::ostringstream o;
+        o << std::setprecision(17) << x;
+        return o.str();
       };
       const std::string plate = "[0, " + number_to_string(length_x) +
                                 "] x [0, " + number_to_string(length_y) + "]";
@@ -792,12 +839,18 @@ namespace NitscheContact
         for (const auto &p : points)
           if (!on_plate(p))
             bad_value("Output/" + entry, prm.get(entry),
-                      "the point (" + number_to_string(p[0]) + ", " +
-                        number_to_string(p[1]) +
+                      "the point (" + full_precision(p[0]) + ", " +
+                        full_precision(p[1]) +
                         ") lies outside the plate " + plate);
       };
       check_on_plate(probes, "Probe points");
       check_on_plate(line, "Profile line");
+      for (std::vector<Point<2>> *points : {&probes, &line})
+        for (Point<2> &p : *points)
+          p = Point<2>(std::clamp(p[0], 0., length_x),
+                       std::clamp(p[1], 0., length_y));
+      profile_start = line[0];
+      profile_end   = line[1];
       if (line[0].distance(line[1]) == 0.)
         bad_value("Output/Profile line", prm.get("Profile line"),
                   "the two points must differ");

@@ -36,6 +36,10 @@ namespace NitscheContact
     unsigned long n_slip    = 0;
     unsigned long n_changed = 0; ///< points whose status changed since the
                                  ///< previous evaluation with a matrix
+    /// slipping points whose slip reversed since the previous evaluation
+    /// with a matrix and whose step uses the stick branch ('Nonlinear
+    /// solver/Stick step on slip reversal')
+    unsigned long n_reversed = 0;
     std::uint64_t hash      = 0; ///< fingerprint of the whole status field
     double        residual_norm = 0.; ///< l2 norm of the residual vector
   };
@@ -54,6 +58,11 @@ namespace NitscheContact
     double sigma_n  = 0.;            ///< normal stress of the formulation
     double gap      = 0.;            ///< g - u_n (> 0: separated)
     double pressure = 0.;            ///< -Lambda_n >= 0
+    /// With friction (zero without): the tangential slip s_t, the argument
+    /// q = sigma_t - r s_t of the ball projection, its radius
+    /// tau = -F Lambda_n and the frictional stress Lambda_t = P_B(0,tau)(q).
+    Tensor<1, 3> slip, q, lambda_t;
+    double       tau = 0.;
 
     /// for Utilities::MPI::gather
     template <class Archive>
@@ -61,6 +70,7 @@ namespace NitscheContact
     serialize(Archive &ar, const unsigned int /*version*/)
     {
       ar &x &y &cell_x &cell_y &weight &status &s_n &sigma_n &gap &pressure;
+      ar &slip &q &lambda_t &tau;
     }
   };
 
@@ -97,6 +107,13 @@ namespace NitscheContact
     p.sigma_n  = in.sigma_n;
     p.gap      = in.gap - in.u_n;
     p.pressure = -st.lambda_n;
+    if (in.friction > 0.)
+      {
+        p.slip     = in.slip;
+        p.q        = st.q;
+        p.lambda_t = st.lambda_t;
+        p.tau      = st.tau;
+      }
     return p;
   }
 

@@ -4,7 +4,7 @@
 // displacement u_n, the normal stress sigma_n(u), the tangential slip s_t,
 // the tangential stress sigma_t(u), the gap g, the Nitsche parameter r, the
 // variant theta and the friction coefficient F (see doc/formulations.md and
-// theory.md, section 2.3). The kernel returns the Nitsche contact stresses
+// doc/theory.md, section 2.3). The kernel returns the Nitsche contact stresses
 //
 //   Lambda_n = [ sigma_n - r (u_n - g) ]_-                     (<= 0)
 //   Lambda_t = P_{B(0, -F Lambda_n)}( sigma_t - r s_t )
@@ -93,7 +93,7 @@ namespace NitscheContact
     double       friction = 0.; ///< Coulomb coefficient F >= 0
     /// Factor c in Lambda_n = c [s_n]_- (and in its derivative). 1 for a
     /// rigid obstacle; 1/(1 + kappa r) for an obstacle of compliance
-    /// kappa >= 0 (Kirchhoff model, theory.md section 4.5).
+    /// kappa >= 0 (Kirchhoff model, doc/theory.md section 4.5).
     double       lambda_scale = 1.;
   };
 
@@ -160,6 +160,38 @@ namespace NitscheContact
           }
       }
     return st;
+  }
+
+  /// The stick branch of the Coulomb law at a point of state `st`:
+  /// Lambda_t = q (the argument of the ball projection itself) with the
+  /// tangential projector as its derivative. At a slipping point this is
+  /// not the law; the models use it only for the Newton step from points
+  /// whose slip direction reversed between two iterates ('Nonlinear
+  /// solver/Stick step on slip reversal', doc/design.md), and keep the
+  /// law's Lambda_t in the residual. The status stays what the law says.
+  inline PointState
+  stick_branch(const PointInput &in, PointState st)
+  {
+    st.lambda_t = st.q;
+    for (unsigned int a = 0; a < 3; ++a)
+      for (unsigned int b = 0; b < 3; ++b)
+        st.dlambda_t_dq[a][b] = (a == b ? 1. : 0.) - in.normal[a] * in.normal[b];
+    st.dlambda_t_dtau = Tensor<1, 3>();
+    return st;
+  }
+
+  /// True when the slip of a point slipping now and at the previous Newton
+  /// iterate reversed its direction (q_now . q_before < 0): between the two
+  /// iterates the step crossed the stick ball of radius tau, which is tiny
+  /// against r |s_t| on the plates (tau / r ~ 1e-10), so the slip
+  /// linearisation, which has no stiffness along q, can keep jumping over
+  /// it (a two-iterate cycle, doc/design.md).
+  inline bool
+  slip_reversed(const PointState &st, const Tensor<1, 3> &q_before,
+                const PointStatus status_before)
+  {
+    return st.status == PointStatus::slip &&
+           status_before != PointStatus::inactive && st.q * q_before < 0.;
   }
 
   /// For theta = 1 and F = 0 the Nitsche residual is the gradient of the

@@ -36,6 +36,13 @@ namespace NitscheContact
             const std::string &value,
             const std::string &allowed);
 
+  /// The finite decimal numbers of a list like "1, 2.5, -3e-2" (split at
+  /// `separator`, blanks trimmed); anything else is bad_value(entry, text).
+  std::vector<double>
+  parse_doubles(const std::string &text,
+                const std::string &entry,
+                char               separator);
+
   /// A number as the user would write it (shortest stream form), for
   /// messages and logs.
   std::string
@@ -126,6 +133,8 @@ namespace NitscheContact
     bool            fast_line_search       = true;
     unsigned int    damping_without_decrease = 20;
     bool            reuse_factorization    = true;
+    /// Nonlinear solver/Stick step on slip reversal
+    bool            stick_on_reversal      = true;
     /// Nonlinear solver/Symmetric factorization: L D L^T (MUMPS) for
     /// symmetric Newton matrices
     bool            symmetric_factorization = true;
@@ -198,6 +207,20 @@ namespace NitscheContact
                        const std::string &constants,
                        const unsigned int n_components,
                        const std::string &entry);
+
+  /// A parsed function must be finite on the plate: every component is
+  /// evaluated on a 101 x 101 grid of [0, Lx] x [0, Ly] (for dim = 3 at
+  /// z = -t/2, 0, t/2); a NaN or an infinity (sqrt or log outside their
+  /// domain) would otherwise spread through the solution or, in a gap,
+  /// silently switch the obstacle off. bad_value(entry, expression) if not.
+  template <int dim>
+  void
+  check_finite_on_plate(const dealii::Function<dim> &f,
+                        const std::string           &entry,
+                        const std::string           &expression,
+                        double                       length_x,
+                        double                       length_y,
+                        double                       thickness);
 
   /// Parse a list "x1,y1; x2,y2; ..." of 2D points; throws InputError naming
   /// `entry` on malformed input.

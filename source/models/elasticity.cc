@@ -428,18 +428,9 @@ namespace NitscheContact
               throw InputError("invalid value '" + box +
                                "' for parameter 'Elasticity/Refinement box': "
                                "expected 'x0, y0, z0; x1, y1, z1'");
-            try
-              {
-                refinement_box.emplace_back(std::stod(c[0]),
-                                            std::stod(c[1]),
-                                            std::stod(c[2]));
-              }
-            catch (const std::exception &)
-              {
-                throw InputError("invalid value '" + box +
-                                 "' for parameter 'Elasticity/Refinement "
-                                 "box': expected numbers");
-              }
+            const std::vector<double> v =
+              parse_doubles(corner, "Elasticity/Refinement box", ',');
+            refinement_box.emplace_back(v[0], v[1], v[2]);
           }
         if (refinement_box.size() != 2)
           throw InputError("invalid value '" + box +
@@ -468,10 +459,38 @@ namespace NitscheContact
     traction_function =
       make_parsed_function<2>(tangential_traction, "", 2,
                               "Elasticity/Top tangential traction");
+    check_finite_on_plate(*traction_function,
+                          "Elasticity/Top tangential traction",
+                          tangential_traction, prm.length_x, prm.length_y,
+                          prm.thickness);
+    // a clamped top face takes no traction: it would vanish silently
+    if (top_clamped && load_as_traction)
+      bad_value("Elasticity/Load applied as", "top traction",
+                "the top face is clamped ('Elasticity/Top face = clamped'), "
+                "a traction there does no work; allowed: 'body force', or "
+                "'Top face = free'");
+    if (top_clamped)
+      for (unsigned int i = 0; i <= 20; ++i)
+        for (unsigned int j = 0; j <= 20; ++j)
+          for (unsigned int c = 0; c < 2; ++c)
+            if (traction_function->value(Point<2>(prm.length_x * i / 20.,
+                                                  prm.length_y * j / 20.),
+                                         c) != 0.)
+              bad_value("Elasticity/Top tangential traction",
+                        tangential_traction,
+                        "the top face is clamped ('Elasticity/Top face = "
+                        "clamped'), a traction there does no work; allowed: "
+                        "'0; 0', or 'Top face = free'");
     if (!prm.exact_solution.empty())
-      exact_solution =
-        make_parsed_function<3>(prm.exact_solution, prm.exact_constants, 3,
-                                "Reference solution/Exact solution");
+      {
+        exact_solution =
+          make_parsed_function<3>(prm.exact_solution, prm.exact_constants, 3,
+                                  "Reference solution/Exact solution");
+        check_finite_on_plate(*exact_solution,
+                              "Reference solution/Exact solution",
+                              prm.exact_solution, prm.length_x, prm.length_y,
+                              prm.thickness);
+      }
   }
 
   std::vector<std::pair<std::string, std::string>>
@@ -521,6 +540,7 @@ namespace NitscheContact
       {
         if (refinement_box.empty())
           break;
+        unsigned int flagged = 0;
         for (const auto &cell : triangulation.active_cell_iterators())
           if (cell->is_locally_owned())
             {
@@ -533,8 +553,20 @@ namespace NitscheContact
                          c[d] <= std::max(refinement_box[0][d],
                                           refinement_box[1][d]);
               if (inside)
-                cell->set_refine_flag();
+                {
+                  cell->set_refine_flag();
+                  ++flagged;
+                }
             }
+        if (Utilities::MPI::sum(flagged, comm) == 0)
+          throw InputError(
+            "invalid value for parameter 'Elasticity/Refinement box': no "
+            "cell centre lies in the box at local refinement step " +
+            std::to_string(step + 1) + " of " +
+            std::to_string(local_refinement_steps) +
+            ", so nothing would be refined; allowed: a box that contains "
+            "the centres of the cells to refine (or 'Local refinement "
+            "steps = 0')");
         triangulation.execute_coarsening_and_refinement();
       }
   }
@@ -685,7 +717,9 @@ namespace NitscheContact
     base.reinit(locally_owned, comm);
     increment.reinit(locally_owned, comm);
     ghosted.reinit(locally_owned, locally_relevant, comm);
+    step_correction.reinit(locally_owned, comm);
     previous_status.clear();
+    previous_q.clear();
   }
 
   template <typename FaceWork>
@@ -906,6 +940,7 @@ namespace NitscheContact
     const unsigned int n = fe.n_dofs_per_cell();
     const double       lambda = prm.lambda(), mu = prm.mu();
     double             c_n    = 0.;
+    int                non_finite = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         for (const unsigned int f : cell->face_indices())
@@ -964,6 +999,16 @@ namespace NitscheContact
                   -std::numeric_limits<double>::max(),
                   std::numeric_limits<double>::max(), 0., values, vectors);
               };
+              bool finite = true;
+              for (const FullMatrix<double> *m : {&a, &s})
+                for (unsigned int i = 0; i < n; ++i)
+                  for (unsigned int j = 0; j < n; ++j)
+                    finite = finite && std::isfinite((*m)(i, j));
+              if (!finite)
+                {
+                  non_finite = 1;
+                  break;
+                }
               Vector<double>     eval;
               FullMatrix<double> evec;
               eigen(a, eval, evec);
@@ -985,6 +1030,17 @@ namespace NitscheContact
               for (unsigned int k = 0; k < eb.size(); ++k)
                 c_n = std::max(c_n, eb[k] / prm.youngs_modulus);
             }
+    // (on every rank: a rank without contact cells must not wait alone)
+    if (Utilities::MPI::max(non_finite, comm) > 0)
+      throw InputError(
+        "the stiffness of the contact cells is not a finite number: "
+        "'Material/Young's modulus' = " +
+        number_to_string(prm.youngs_modulus) + ", 'Geometry/Thickness' = " +
+        number_to_string(prm.thickness) + " and the plate lengths " +
+        number_to_string(prm.length_x) + " x " +
+        number_to_string(prm.length_y) +
+        " overflow double precision; allowed: magnitudes whose products "
+        "stay finite (e.g. SI or N-mm units)");
     return Utilities::MPI::max(c_n, comm);
   }
 
@@ -1054,6 +1110,19 @@ namespace NitscheContact
     std::vector<unsigned char> status;
     ContactCounts              counts;
     double                     contact_energy = 0.;
+    // 'Stick step on slip reversal': the q of every point at the iterates
+    // from which steps are taken, and the difference R_branch - R of the
+    // points whose step uses the stick branch (added to the right-hand
+    // side of the step only).
+    const bool track_q = with_matrix && friction > 0. &&
+                         scheme == NonlinearScheme::newton &&
+                         prm.stick_on_reversal;
+    std::vector<Tensor<1, 3>> qs;
+    const bool compare_q = track_q && previous_q.size() == previous_status.size();
+    if (with_matrix)
+      step_correction = 0.;
+    Vector<double> cell_difference(n), point_law(n), point_branch(n);
+    bool           cell_reversed = false;
     for_each_contact_face(
       fvf,
       [&](const DoFHandler<3>::active_cell_iterator &cell,
@@ -1067,20 +1136,47 @@ namespace NitscheContact
             const PointInput in =
               face_point_input(fvf, q, u_values[q], u_grads[q], r);
             const PointState st = evaluate_contact_point(in, scheme);
+            const std::size_t k = status.size();
             status.push_back(static_cast<unsigned char>(st.status));
+            if (track_q)
+              qs.push_back(st.q);
             contact_energy += contact_energy_density(in, st) * fvf.JxW(q);
             if (st.status == PointStatus::inactive)
               continue; // all in C
             if (!any_active)
               {
-                any_active    = true;
-                cell_matrix   = 0.;
-                cell_residual = 0.;
+                any_active      = true;
+                cell_matrix     = 0.;
+                cell_residual   = 0.;
+                cell_difference = 0.;
+                cell_reversed   = false;
               }
             shape_contact_data(fvf, q, comp, lambda, mu, shapes);
-            add_point_contribution(in, st, shapes, fvf.JxW(q),
-                                   with_matrix ? &cell_matrix : nullptr,
-                                   cell_residual);
+            const bool reversed =
+              compare_q && k < previous_q.size() &&
+              slip_reversed(st, previous_q[k],
+                            static_cast<PointStatus>(previous_status[k]));
+            if (reversed)
+              {
+                // the law's residual, the stick branch's matrix, and the
+                // difference of the two residuals for the step
+                ++counts.n_reversed;
+                cell_reversed = true;
+                point_law    = 0.;
+                point_branch = 0.;
+                add_point_contribution(in, st, shapes, fvf.JxW(q), nullptr,
+                                       point_law);
+                add_point_contribution(in, stick_branch(in, st), shapes,
+                                       fvf.JxW(q), &cell_matrix,
+                                       point_branch);
+                cell_residual += point_law;
+                point_branch -= point_law;
+                cell_difference += point_branch;
+              }
+            else
+              add_point_contribution(in, st, shapes, fvf.JxW(q),
+                                     with_matrix ? &cell_matrix : nullptr,
+                                     cell_residual);
             if (prm.theta != 0.)
               add_theta_terms(prm.theta / r, friction > 0., shapes,
                               -fvf.JxW(q), &in,
@@ -1091,6 +1187,12 @@ namespace NitscheContact
           return;
         cell->get_dof_indices(dofs);
         cell_residual *= -1.; // we assemble -R
+        if (cell_reversed)
+          {
+            cell_difference *= -1.;
+            constraints.distribute_local_to_global(cell_difference, dofs,
+                                                   step_correction);
+          }
         if (with_matrix)
           constraints.distribute_local_to_global(cell_matrix,
                                                  cell_residual, dofs,
@@ -1101,7 +1203,10 @@ namespace NitscheContact
                                                  residual);
       });
     if (with_matrix)
-      system_matrix.compress(VectorOperation::add);
+      {
+        system_matrix.compress(VectorOperation::add);
+        step_correction.compress(VectorOperation::add);
+      }
     residual.compress(VectorOperation::add);
     // constrained rows carry no equation
     for (const auto &line : constraints.get_lines())
@@ -1127,6 +1232,7 @@ namespace NitscheContact
         else
           counts.n_changed = counts.n_active;
         previous_status = status;
+        previous_q      = std::move(qs);
       }
     counts.hash = status_hash(status);
     counts.n_points  = Utilities::MPI::sum(counts.n_points, comm);
@@ -1134,8 +1240,12 @@ namespace NitscheContact
     counts.n_stick   = Utilities::MPI::sum(counts.n_stick, comm);
     counts.n_slip    = Utilities::MPI::sum(counts.n_slip, comm);
     counts.n_changed = Utilities::MPI::sum(counts.n_changed, comm);
+    counts.n_reversed = Utilities::MPI::sum(counts.n_reversed, comm);
     if (with_matrix)
-      last_changed = counts.n_changed;
+      {
+        last_changed  = counts.n_changed + counts.n_reversed;
+        last_reversed = counts.n_reversed;
+      }
     counts.hash      = Utilities::MPI::sum(counts.hash, comm);
     counts.residual_norm = residual.l2_norm();
     last_contact_energy = Utilities::MPI::sum(contact_energy, comm);
@@ -1150,12 +1260,18 @@ namespace NitscheContact
     base = solution;
     increment = 0.;
     unsigned int its = 0;
+    // the step's right-hand side: -R, or -R_branch with points on the stick
+    // branch (step_correction is rebuilt by the next assembly with matrix)
+    if (last_reversed > 0)
+      step_correction += residual;
+    const TrilinosWrappers::MPI::Vector &rhs =
+      last_reversed > 0 ? step_correction : residual;
     if (linear_solver == "direct")
       {
         its = direct_solver.solve(
           system_matrix,
           increment,
-          residual,
+          rhs,
           ReusedFactorization::change_of_newton_matrix(last_changed,
                                                        friction > 0.),
           has_energy());
@@ -1174,13 +1290,13 @@ namespace NitscheContact
         data.smoother_sweeps       = 2;
         data.aggregation_threshold = 0.02;
         amg.initialize(system_matrix, data);
-        SolverControl control(5000, krylov_tolerance * residual.l2_norm());
+        SolverControl control(5000, krylov_tolerance * rhs.l2_norm());
         SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
           control,
           SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(200));
         try
           {
-            gmres.solve(system_matrix, increment, residual, amg);
+            gmres.solve(system_matrix, increment, rhs, amg);
           }
         catch (const SolverControl::NoConvergence &e)
           {
@@ -1206,7 +1322,7 @@ namespace NitscheContact
     // its tolerance)
     if (linear_solver != "direct")
       ReusedFactorization::check_linear_residual(
-        system_matrix, increment, residual,
+        system_matrix, increment, rhs,
         std::max(1e-3, 100. * krylov_tolerance));
     constraints.distribute(increment);
     return its;

@@ -1,6 +1,6 @@
 // Model 3: Kirchhoff-Love plate, bicubic Hermite element, GSV stabilised
 // obstacle term or "Kirchhoff with Nitsche". See doc/kirchhoff.md for the
-// formulation as implemented and theory.md section 4 for the derivations.
+// formulation as implemented and doc/theory.md section 4 for the derivations.
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parallel.h>
 #include <deal.II/base/utilities.h>
@@ -17,8 +17,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iomanip>
+#include <iostream>
 #include <limits>
 #include <sstream>
+#include <tuple>
 
 namespace NitscheContact
 {
@@ -65,11 +68,11 @@ namespace NitscheContact
         "gsv",
         Patterns::Selection("gsv|nitsche"),
         "'gsv': the Gustafsson-Stenberg-Videman stabilised method (paper "
-        "eq. 18-19, corrected; theory.md 4.4-4.5): p_h = 1/(kappa + alpha "
+        "eq. 18-19, corrected; doc/theory.md 4.4-4.5): p_h = 1/(kappa + alpha "
         "h^4) [psi - w + alpha h^4 (D Delta^2 w - f)]_+ with the Nitsche "
         "variant 'Contact/Nitsche theta'. 'nitsche': the paper's 'Kirchhoff "
         "with Nitsche' (3D Nitsche term with Kirchhoff kinematics on the "
-        "bottom face, theory.md 4.7): sigma_n = lambda (t/2) Delta w, r = "
+        "bottom face, doc/theory.md 4.7): sigma_n = lambda (t/2) Delta w, r = "
         "gamma0 E / t with 'Contact/Nitsche gamma0' (theta = 1 needs gamma0 "
         "> about 1.4).");
       prm.declare_entry(
@@ -256,12 +259,32 @@ namespace NitscheContact
                 "obstacle");
     if (prm.subdivisions.size() < 2)
       bad_value("Geometry/Subdivisions", "", "expected 'nx, ny'");
+    if (prm.subdivisions.size() > 2 && prm.subdivisions[2] != 1)
+      bad_value("Geometry/Subdivisions",
+                std::to_string(prm.subdivisions[0]) + ", " +
+                  std::to_string(prm.subdivisions[1]) + ", " +
+                  std::to_string(prm.subdivisions[2]),
+                "the Kirchhoff plate model has no cells through the "
+                "thickness; give 'nx, ny' (or nz = 1)");
 
     if (!prm.exact_solution.empty())
       exact_value = make_parsed_function<2>(prm.exact_solution,
                                             prm.exact_constants,
                                             1,
                                             "Reference solution/Exact solution");
+    for (const auto &[f, entry, text] :
+         {std::make_tuple(exact_value.get(),
+                          std::string("Reference solution/Exact solution"),
+                          prm.exact_solution),
+          std::make_tuple(exact_gradient.get(),
+                          std::string("Kirchhoff/Exact gradient"),
+                          exact_gradient_text),
+          std::make_tuple(exact_hessian.get(),
+                          std::string("Kirchhoff/Exact Hessian"),
+                          exact_hessian_text)})
+      if (f != nullptr)
+        check_finite_on_plate(*f, entry, text, prm.length_x, prm.length_y,
+                              prm.thickness);
     if ((exact_gradient || exact_hessian) && !exact_value)
       bad_value(exact_gradient ? "Kirchhoff/Exact gradient" :
                                  "Kirchhoff/Exact Hessian",
@@ -278,6 +301,25 @@ namespace NitscheContact
     D          = prm.bending_stiffness();
     lambda_eps = prm.lambda() * 0.5 * prm.thickness;
     quadrature = QGauss<2>(n_quadrature);
+
+    // The coercivity bound (1+theta)^2/4 alpha C_I < 1 of the GSV method
+    // with C_I = 5298.2 D, the largest local generalized eigenvalue of
+    // h^4 |D Delta^2 v|^2 against a(v, v) on a square BFS cell for nu = 0.3
+    // (doc/kirchhoff.md); the Newton matrix's inertia check only sees an
+    // indefinite matrix, not every wrong contact set of a too large alpha.
+    if (formulation == Formulation::gsv && prm.theta != -1.)
+      {
+        const double bound = 4. / ((1. + prm.theta) * (1. + prm.theta) * 5298.2);
+        if (alpha_D >= bound)
+          std::cout << "  warning: 'Kirchhoff/Stabilisation alpha' = "
+                    << alpha_D << " is not below the coercivity bound alpha*D < "
+                    << std::setprecision(3) << bound << std::setprecision(6)
+                    << " of theta = " << prm.theta
+                    << " (computed for nu = 0.3 on square cells): the method "
+                       "may return a wrong contact set; lower it (default "
+                       "1e-4) or use theta = -1"
+                    << std::endl;
+      }
   }
 
 

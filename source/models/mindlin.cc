@@ -123,7 +123,7 @@ namespace NitscheContact
         "Nitsche length", "thickness",
         Patterns::Selection("thickness|cell size"),
         "h_n in r = gamma0 E / h_n: 'thickness' (default; theta = 1 is then "
-        "stable for gamma0 > 1.4, theory.md 3.3) or 'cell size' (largest "
+        "stable for gamma0 > 1.4, doc/theory.md 3.3) or 'cell size' (largest "
         "cell side; needs gamma0 > 44 for theta = 1 on the paper's mesh).");
       prm.declare_entry("Contact quadrature points", "4",
                         Patterns::Integer(2, 12),
@@ -232,11 +232,17 @@ namespace NitscheContact
                                             1,
                                             "Load/Transverse load");
     if (!common.exact_solution.empty())
-      exact_solution =
-        make_parsed_function<2>(common.exact_solution,
-                                common.exact_constants,
-                                3,
-                                "Reference solution/Exact solution");
+      {
+        exact_solution =
+          make_parsed_function<2>(common.exact_solution,
+                                  common.exact_constants,
+                                  3,
+                                  "Reference solution/Exact solution");
+        check_finite_on_plate(*exact_solution,
+                              "Reference solution/Exact solution",
+                              common.exact_solution, common.length_x,
+                              common.length_y, common.thickness);
+      }
   }
 
 
@@ -324,7 +330,7 @@ namespace NitscheContact
         cell_grid[static_cast<std::size_t>(j) * nx + i] = cell;
       }
 
-    // Edge conditions (theory.md 3.4): clamped: everything zero; hard
+    // Edge conditions (doc/theory.md 3.4): clamped: everything zero; hard
     // simple support: w and the tangential rotation zero (soft: w only),
     // membrane fixed; symmetry: normal rotation and normal membrane
     // displacement zero; free: natural.
@@ -399,7 +405,7 @@ namespace NitscheContact
                              const double            hy,
                              const bool              mitc4)
   {
-    // gamma = grad w + phi. MITC4 on an axis-aligned rectangle (theory.md
+    // gamma = grad w + phi. MITC4 on an axis-aligned rectangle (doc/theory.md
     // 3.4): gamma_x is tied at the midpoints of the edges y = y0, y0 + hy and
     // interpolated linearly in y, gamma_y likewise in x. For Q1 functions
     // this is gamma_h,x(x, y) = d_x w(x, y) + phi_x(x_c, y) and gamma_h,y(x,
@@ -490,7 +496,7 @@ namespace NitscheContact
         }
     }
 
-    // Linearised bottom-face quantities (theory.md 3.3) of every shape
+    // Linearised bottom-face quantities (doc/theory.md 3.3) of every shape
     // function at every contact point: u_n = -w, sigma_n = lambda (div ubar
     // - eps div phi), u_t = ubar - eps phi, sigma_t = -mu gamma_h.
     const unsigned int nq = contact_quadrature.size();
@@ -660,6 +666,7 @@ namespace NitscheContact
     previous_status.assign(static_cast<std::size_t>(nx) * ny *
                              contact_quadrature.size(),
                            0);
+    previous_q.clear();
   }
 
 
@@ -736,6 +743,19 @@ namespace NitscheContact
     // result does not depend on the number of threads.
     std::vector<unsigned char> status(previous_status.size());
     const std::size_t          n_cells = cell_grid.size();
+    // 'Stick step on slip reversal' (see the 3D model): only on the serial
+    // path that builds the matrix
+    const bool track_q = build_matrix && friction > 0. &&
+                         scheme == NonlinearScheme::newton &&
+                         prm.stick_on_reversal;
+    const bool compare_q = track_q && previous_q.size() == status.size();
+    std::vector<Tensor<1, 3>> qs(track_q ? status.size() : 0);
+    if (build_matrix)
+      {
+        step_correction.reinit(residual.size());
+        counts.n_reversed = 0;
+      }
+    Vector<double> point_law(n), point_branch(n), cell_difference(n);
     cell_residuals.resize(n * n_cells);
     cell_energies.resize(n_cells);
     const auto cell_work = [&](const std::size_t c,
@@ -758,6 +778,8 @@ namespace NitscheContact
           const PointInput  in = point_input(c_u, q, gaps[k]);
           const PointState  st = evaluate_contact_point(in, scheme);
           status[k]            = static_cast<unsigned char>(st.status);
+          if (track_q)
+            qs[k] = st.q;
           if (with_energy)
             energy += contact_energy_density(in, st) * contact_JxW[q];
           if (st.status == PointStatus::inactive)
@@ -767,12 +789,33 @@ namespace NitscheContact
           any_active = true;
           // Full kernel contribution instead of the theta-terms already
           // contained in the constant part.
-          add_point_contribution(in,
-                                 st,
-                                 contact_shapes[q],
-                                 contact_JxW[q],
-                                 c_matrix,
-                                 c_residual);
+          if (compare_q &&
+              slip_reversed(st, previous_q[k],
+                            static_cast<PointStatus>(previous_status[k])))
+            {
+              // the law's residual, the stick branch's matrix, and the
+              // difference of the two residuals for the step
+              ++counts.n_reversed;
+              point_law    = 0.;
+              point_branch = 0.;
+              add_point_contribution(in, st, contact_shapes[q],
+                                     contact_JxW[q], nullptr, point_law);
+              add_point_contribution(in, stick_branch(in, st),
+                                     contact_shapes[q], contact_JxW[q],
+                                     c_matrix, point_branch);
+              c_residual += point_law;
+              point_branch -= point_law;
+              point_branch *= -1.; // -(R_branch - R)
+              constraints.distribute_local_to_global(point_branch, c_dofs,
+                                                     step_correction);
+            }
+          else
+            add_point_contribution(in,
+                                   st,
+                                   contact_shapes[q],
+                                   contact_JxW[q],
+                                   c_matrix,
+                                   c_residual);
           theta_matrices[q].vmult(c_tmp, c_u);
           c_residual -= c_tmp;
           if (c_matrix)
@@ -836,7 +879,9 @@ namespace NitscheContact
     if (with_matrix)
       {
         previous_status.swap(status);
-        last_changed = counts.n_changed;
+        previous_q.swap(qs);
+        last_changed  = counts.n_changed + counts.n_reversed;
+        last_reversed = counts.n_reversed;
       }
     return counts;
   }
@@ -1174,7 +1219,12 @@ namespace NitscheContact
       }
     const IndexSet owned = complete_index_set(dof_handler.n_dofs());
     TrilinosWrappers::MPI::Vector b(owned, comm), x(owned, comm);
+    // the step's right-hand side: -R, or -R_branch with points on the
+    // stick branch
     std::copy(residual.begin(), residual.end(), b.trilinos_vector()[0]);
+    if (last_reversed > 0)
+      for (unsigned int i = 0; i < step_correction.size(); ++i)
+        b.trilinos_vector()[0][i] += step_correction(i);
     const unsigned int its = direct_solver.solve(
       system_matrix,
       x,

@@ -4,6 +4,7 @@ allowed); --help and --print-parameters must exit 0. No output directory
 may be created for a rejected parameter file."""
 import argparse
 import os
+import shutil
 import subprocess
 import sys
 
@@ -140,6 +141,44 @@ CASES = [
      "subsection Elasticity\n  set Refine through thickness = false\n"
      "  set Refinement box = 0, 0, -1; 1, 1, 1\n  set Local refinement steps = 1\nend",
      ["Elasticity/Refine through thickness", "'false'", "Local refinement steps", "= 1"]),
+    # found by the input review of session 15
+    ("sphere centre not finite",
+     "subsection Obstacle\n  set Type = sphere\n  set Sphere center = nan, 5, -3\nend",
+     ["Obstacle/Sphere center", "nan, 5, -3", "finite decimal numbers"]),
+    ("subdivisions in hexadecimal",
+     "subsection Geometry\n  set Subdivisions = 0x2, 2, 1\nend",
+     ["Geometry/Subdivisions", "0x2, 2, 1", "finite decimal numbers"]),
+    ("refinement box with trailing text",
+     "subsection Elasticity\n  set Refinement box = 0, 0, -1abc; 5, 5, 1\n"
+     "  set Local refinement steps = 1\nend",
+     ["Elasticity/Refinement box", "-1abc", "finite decimal numbers"]),
+    ("refinement box without a cell",
+     "subsection Elasticity\n  set Refinement box = 100, 100, -1; 200, 200, 1\n"
+     "  set Local refinement steps = 1\nend",
+     ["Elasticity/Refinement box", "no cell centre", "nothing would be refined"]),
+    ("top traction on a clamped top face",
+     "subsection Elasticity\n  set Top face = clamped\n  set Load applied as = top traction\nend",
+     ["Elasticity/Load applied as", "top traction", "clamped"]),
+    ("tangential traction on a clamped top face",
+     "subsection Elasticity\n  set Top face = clamped\n  set Top tangential traction = 100; 0\nend",
+     ["Elasticity/Top tangential traction", "100; 0", "clamped"]),
+    ("tangential traction not finite",
+     "subsection Elasticity\n  set Top tangential traction = 0; sqrt(x-20)\nend",
+     ["Elasticity/Top tangential traction", "sqrt(x-20)", "finite number"]),
+    ("exact solution not finite",
+     "subsection Reference solution\n  set Exact solution = 0; 0; log(x-20)\nend",
+     ["Reference solution/Exact solution", "log(x-20)", "finite number"]),
+    ("Kirchhoff exact gradient not finite",
+     "set Model = kirchhoff\nsubsection Geometry\n  set Subdivisions = 4, 4\nend\n"
+     "subsection Reference solution\n  set Exact solution = 0\nend\n"
+     "subsection Kirchhoff\n  set Exact gradient = 0; sqrt(-1)\nend",
+     ["Kirchhoff/Exact gradient", "sqrt(-1)", "finite number"]),
+    ("Kirchhoff with cells through the thickness",
+     "set Model = kirchhoff\nsubsection Geometry\n  set Subdivisions = 4, 4, 4\nend",
+     ["Geometry/Subdivisions", "4, 4, 4", "no cells through the thickness"]),
+    ("Young's modulus overflowing the stiffness",
+     "subsection Material\n  set Young's modulus = 1e305\nend",
+     ["Young's modulus", "1e+305", "overflow"]),
 ]
 
 # a regular file: a directory below it can never be created (even as root)
@@ -153,6 +192,7 @@ CASES.append(("unwritable output directory",
 for i, (case, body, expected) in enumerate(CASES):
     prm = os.path.join(args.workdir, "case%02d.prm" % i)
     outdir = os.path.join(args.workdir, "case%02d-out" % i)
+    shutil.rmtree(outdir, ignore_errors=True)  # of an earlier run of the test
     with open(prm, "w") as f:
         # a tiny valid problem, then the bad entry; the last 'set' wins
         f.write("set Model = elasticity\n"
@@ -212,6 +252,25 @@ for allow in (False, True):
               % r.returncode)
     check(0 < len(iterations) < 40,
           "tolerance 1e-16: stopped after %d iterations (< 40 of the 100 allowed)" % len(iterations))
+
+# Probe points and a profile line within round-off (1e-10 of the plate
+# size) outside an edge are moved onto it: before session 15 they passed
+# the check and were then reported as NaN (null in summary.json).
+edge = os.path.join(args.workdir, "edge.prm")
+with open(edge, "w") as f:
+    f.write("set Model = kirchhoff\nsubsection Geometry\n  set Subdivisions = 4, 4\nend\n"
+            "subsection Output\n  set Directory = %s\n  set Format = none\n"
+            "  set Probe points = 10.0000000005, 5; -0.0000000005, 2.5\n"
+            "  set Profile line = -0.0000000005, 5; 10.0000000005, 5\nend\n"
+            % os.path.join(args.workdir, "edge-out"))
+r = execute([edge])
+import json
+summary = json.load(open(os.path.join(args.workdir, "edge-out", "summary.json")))
+profile = open(os.path.join(args.workdir, "edge-out", "profile.csv")).read()
+check(r.returncode == 0 and summary["cycles"][-1]["probes"] == [0, 0] and
+      "nan" not in profile.lower(),
+      "probe points and profile line 5e-10 outside the clamped edges: w = 0 "
+      "there, no NaN (exit %d, probes %s)" % (r.returncode, summary["cycles"][-1]["probes"]))
 
 r = execute([os.path.join(args.workdir, "does_not_exist.prm")])
 check(r.returncode == 1 and "does_not_exist.prm" in r.stderr,

@@ -7,7 +7,9 @@
 //     steps e = 1e-6, 1e-7, 1e-8 |U|/|d|; the residual is piecewise smooth
 //     and a random U has no point exactly on a kink);
 //     this includes the Coulomb friction of the Mindlin and 3D models
-//     (stick and slip points, theta = 1, 0, -1);
+//     (stick and slip points, theta = 1, 0, -1; with 'Stick step on slip
+//     reversal = false', since that option replaces the Jacobian rows of
+//     points whose slip reversed by those of the stick branch);
 //  2. where energy() is defined (theta = 1 frictionless, and the pure
 //     penalty), dJ/dt along d equals R.d: (J(U + s d) - J(U - s d)) / (2s)
 //     against R(U).d (relative 1e-6), for d random and d = the Newton
@@ -62,7 +64,11 @@ namespace
            "\n  set Friction coefficient = " + std::to_string(friction) +
            "\nend\n"
            "subsection Output\n  set Format = none\n"
-           "  set Directory = output-dir\nend\n" +
+           "  set Directory = output-dir\nend\n"
+           // the generalized Jacobian everywhere (the stick step of a
+           // reversed slip is a different matrix by design)
+           "subsection Nonlinear solver\n"
+           "  set Stick step on slip reversal = false\nend\n" +
            extra;
   }
 

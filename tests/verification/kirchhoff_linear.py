@@ -1,5 +1,5 @@
 """Kirchhoff plate without contact (obstacle far below): centre deflection of
-the uniformly loaded square plate against the reference values of theory.md
+the uniformly loaded square plate against the reference values of doc/theory.md
 6.1: clamped 0.00126532 q a^4/D (standard 6-digit value), simply supported
 0.0040623527 q a^4/D (Navier series). 5 significant digits on a 32x32 mesh,
 for theta = 1 (GSV term active everywhere) and theta = 0 (plain Galerkin)."""

@@ -1,7 +1,7 @@
 """Manufactured solution w = sin^2(pi x) sin^2(pi y) of the clamped unit
 square (D = 1, q = D Delta^2 w, obstacle far below): the errors in the L2
 norm and the H1, H2 seminorms must converge with the bicubic rates 4, 3, 2
-(theory.md 6.4). Run once with the exact gradient/Hessian given and once
+(doc/theory.md 6.4). Run once with the exact gradient/Hessian given and once
 with the finite-difference fallback, which must give the same errors."""
 import os, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))

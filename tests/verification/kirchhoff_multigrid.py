@@ -1,7 +1,7 @@
 """The Kirchhoff model's geometric multigrid solver ('Kirchhoff/Linear
 solver = multigrid': CG or GMRES with a V-cycle over the nested Hermite
 spaces) against two independent sources:
- - the reference centre deflections of theory.md 6.1 (clamped 0.00126532,
+ - the reference centre deflections of doc/theory.md 6.1 (clamped 0.00126532,
    simply supported 0.0040623527 q a^4/D) on a 64x64 mesh, which has three
    multigrid levels (64, 32, 16 cells); the simply supported edges constrain
    only w and its tangential derivative, so they test the level constraints;

@@ -1,4 +1,4 @@
-"""Exact benchmark of theory.md 4.8: the clamped strip (cylindrical bending)
+"""Exact benchmark of doc/theory.md 4.8: the clamped strip (cylindrical bending)
 on a flat obstacle. L = 1 (clamped at x = 0, 1), width H = 0.25 with
 symmetry conditions on y = 0, H, D = 1, q = 1 downwards, obstacle psi = -g0
 (mid-plane convention) with g0 = l^4 q / (72 D), l = 0.27. Exact: contact

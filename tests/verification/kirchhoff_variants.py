@@ -9,7 +9,7 @@ contact zone forms and the D Delta^2 v terms of GSV are exercised):
    roughly like kappa;
  - the fixed-point and Newton schemes give the same solution;
  - the 'Kirchhoff with Nitsche' formulation gives a solution close to GSV
-   (it differs by the O(t^2 |curvature|) shift of theory.md 4.7)."""
+   (it differs by the O(t^2 |curvature|) shift of doc/theory.md 4.7)."""
 import os, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from common import parse_args, run, close, check, finish

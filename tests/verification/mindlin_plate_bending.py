@@ -60,7 +60,7 @@ def centre(name, t, bc, n=32, theta=0, shear="MITC4"):
     return -c["probes"][0]
 
 
-# Raw MITC4 values at n = 32 (theory.md table 6.2, independent prototype).
+# Raw MITC4 values at n = 32 (doc/theory.md table 6.2, independent prototype).
 table = {("clamped", 0.1): 0.00150355, ("clamped", 0.01): 0.00126692,
          ("clamped", 0.001): 0.00126442,
          ("simply supported", 0.1): 0.00427173,

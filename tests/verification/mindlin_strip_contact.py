@@ -1,5 +1,5 @@
 """Clamped strip (cylindrical bending) on a flat obstacle, solved as a
-Reissner-Mindlin plate with the literal Nitsche insertion (theory.md 4.8).
+Reissner-Mindlin plate with the literal Nitsche insertion (doc/theory.md 4.8).
 
 Exact Kirchhoff solution for the paper's data (L = 10, t = 0.01, E = 2e5,
 nu = 0.3, q = 0.02, obstacle 1 below the mid-plane, i.e. g0 = 1 - t/2):

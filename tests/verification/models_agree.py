@@ -32,7 +32,7 @@ independent values instead of a symmetric tolerance:
  - a linear run (obstacle removed) of the same 3D mesh against the
    published centre deflection of the clamped square plate,
    0.00126532 q a^4/D (Timoshenko & Woinowsky-Krieger's 0.00126, to 6
-   digits as in theory.md 6.1 and kirchhoff_linear.py): measured -2.12 %, i.e. the mesh is 2.2 % too stiff (checked:
+   digits as in doc/theory.md 6.1 and kirchhoff_linear.py): measured -2.12 %, i.e. the mesh is 2.2 % too stiff (checked:
    stiffer, by less than 3 %);
  - upper bound: a Kirchhoff GSV plate (32^2) made stiffer by exactly this
    measured factor (E * w_exact/|w_3D|) carries reaction 0.7460 (-0.72 %)

@@ -1,8 +1,8 @@
 """The constant C_n of the discrete trace-inverse inequality
 h_n ||sigma_n(v)||^2_F <= C_n E a_K(v, v) that the 3D model computes on the
 first contact cell (summary.json extra 'nitsche_trace_constant'; theta is
-coercive for gamma0 > (1+theta)^2/4 C_n, theory.md 2.4), against the values
-tabulated in theory.md 2.4 (an independent computation: largest local
+coercive for gamma0 > (1+theta)^2/4 C_n, doc/theory.md 2.4), against the values
+tabulated in doc/theory.md 2.4 (an independent computation: largest local
 generalized eigenvalue, nu = 0.3, exact face quadrature): Q1 hexahedron
 2.21 (cube) and 1.40 (flat cell, h_z/h_xy = 0.1), Q2 hexahedron 6.73 and
 5.46. Then the paper's 3D cell (0.3125 x 0.3125 x 0.01, Q2): with 3x3 Gauss
@@ -48,7 +48,7 @@ def warned(out):
 for tag, degree, side, thickness, ref in [("q1_cube", 1, 1, 1, 2.21), ("q1_flat", 1, 1, 0.1, 1.40),
                                           ("q2_cube", 2, 1, 1, 6.73), ("q2_flat", 2, 1, 0.1, 5.46)]:
     s, out = run(args, tag, prm(degree, side, thickness, 5, "gauss"))
-    close(constant(s), ref, 0.005, tag + ": C_n against theory.md 2.4")
+    close(constant(s), ref, 0.005, tag + ": C_n against doc/theory.md 2.4")
     check(not warned(out), tag + ": gamma0 = 20 above C_n, no warning")
 
 # the paper's cell: regression values of doc/benchmarks.md (5.39: just below

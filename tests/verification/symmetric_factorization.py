@@ -12,11 +12,11 @@ coercivity bounds:
 - 3D, theta = 1: no negative eigenvalue with gamma0 = 60, above the
   trace-constant bound (1+theta)^2/4 C_n = 33.6 of this contact rule that
   the program computes on a single cell (verification/nitsche_trace_constant
-  checks C_n against theory.md 2.4); some, and a warning, with gamma0 = 20
+  checks C_n against doc/theory.md 2.4); some, and a warning, with gamma0 = 20
   below it (an LDL^T of the dumped 32x32x1 matrix in scipy counted 237,
   doc/benchmarks.md);
 - Kirchhoff GSV: none with alpha D = 1e-4 below the theory bound 1.89e-4
-  (theory.md 4.4), some with alpha D = 5e-4 above it.
+  (doc/theory.md 4.4), some with alpha D = 5e-4 above it.
 - Mindlin, theta = 1, clamped, no membrane unknowns, 4x4 Gauss contact
   points: the literal insertion removes c = 3 (1-nu^2) (lambda/E)^2 D /
   gamma0 of the (div phi)^2 bending stiffness everywhere (doc/mindlin.md),

@@ -1,7 +1,7 @@
 // The bicubic Hermite (Bogner-Fox-Schmit) element: a C^1-conforming
 // (H^2-conforming) finite element for axis-parallel rectangular meshes
 // without hanging nodes, written for deal.II 9.4 which has no FE_Hermite.
-// See doc/kirchhoff.md and theory.md section 4.1.
+// See doc/kirchhoff.md and doc/theory.md section 4.1.
 #ifndef nitsche_contact_fe_fe_bicubic_hermite_h
 #define nitsche_contact_fe_fe_bicubic_hermite_h
 

@@ -142,7 +142,7 @@ namespace NitscheContact
     nitsche_r(const dealii::DoFHandler<3>::active_cell_iterator &cell,
               unsigned int                                      face) const;
     /// The constant C_n of the discrete trace-inverse inequality
-    /// h_n ||sigma_n(v)||^2_F <= C_n E a_K(v,v) (theory.md 2.4) on the first
+    /// h_n ||sigma_n(v)||^2_F <= C_n E a_K(v,v) (doc/theory.md 2.4) on the first
     /// contact cell, with the contact quadrature (largest over MPI ranks):
     /// theta is coercive for gamma0 > (1+theta)^2/4 C_n.
     double
@@ -219,6 +219,13 @@ namespace NitscheContact
     std::vector<double> line_switching;
 
     std::vector<unsigned char> previous_status;
+    /// q = sigma_t - r s_t of every contact point at the last assembly
+    /// with a matrix ('Stick step on slip reversal'; empty without)
+    std::vector<dealii::Tensor<1, 3>> previous_q;
+    /// -(R_branch - R) of the points whose step uses the stick branch:
+    /// the step solves K dU = residual + step_correction
+    dealii::TrilinosWrappers::MPI::Vector step_correction;
+    unsigned long last_reversed = 0; ///< such points at the last matrix
     double                     load_factor = 1.;
     /// F in use: 'Contact/Friction coefficient' times the scale of the
     /// driver's friction continuation

@@ -1,6 +1,6 @@
 // Model 3: the Kirchhoff-Love plate discretised with the C^1 bicubic Hermite
 // (Bogner-Fox-Schmit) element, in contact with a rigid (or compliant)
-// obstacle below it. Two contact formulations (theory.md section 4):
+// obstacle below it. Two contact formulations (doc/theory.md section 4):
 //  - "gsv": the Gustafsson-Stenberg-Videman stabilised method (the paper's
 //    eq. 18-19, corrected), written as the generic Nitsche kernel with the
 //    plate equilibrium operator sigma_n(w) = f - D Delta^2 w, r = 1/(alpha

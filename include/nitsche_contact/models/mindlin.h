@@ -4,7 +4,7 @@
 //
 //   u_alpha(x, x3) = ubar_alpha(x) + x3 phi_alpha(x),   u_3(x, x3) = w(x)
 //
-// into the 3D Nitsche formulation (theory.md section 3, doc/mindlin.md).
+// into the 3D Nitsche formulation (doc/theory.md section 3, doc/mindlin.md).
 //
 // The unknowns are the deflection w, the rotations phi = (phi_x, phi_y)
 // (Kirchhoff limit phi = -grad w) and, when friction is on, the membrane
@@ -265,6 +265,13 @@ namespace NitscheContact
     std::unique_ptr<dealii::FunctionParser<2>> exact_solution;
 
     std::vector<unsigned char> previous_status;
+    /// q = sigma_t - r s_t of every contact point at the last assembly
+    /// with a matrix ('Stick step on slip reversal'; empty without), and
+    /// -(R_branch - R) of the points whose step uses the stick branch: the
+    /// step solves K dU = residual + step_correction
+    std::vector<dealii::Tensor<1, 3>> previous_q;
+    dealii::Vector<double>            step_correction;
+    unsigned long                     last_reversed = 0;
     /// Contact part of energy() at the iterate of the last assemble().
     double last_contact_energy = 0.;
     double                     load_factor = 1.; ///< load stepping
