@@ -97,6 +97,19 @@ namespace NitscheContact
   check_finite_on_plate<3>(const Function<3> &, const std::string &,
                            const std::string &, double, double, double);
 
+  void
+  require_one_layer(const CommonParameters &prm, const std::string &model)
+  {
+    if (prm.subdivisions.size() > 2 && prm.subdivisions[2] != 1)
+      bad_value("Geometry/Subdivisions",
+                std::to_string(prm.subdivisions[0]) + ", " +
+                  std::to_string(prm.subdivisions[1]) + ", " +
+                  std::to_string(prm.subdivisions[2]),
+                "the " + model +
+                  " plate model has no cells through the thickness; give "
+                  "'nx, ny' (or nz = 1)");
+  }
+
   std::vector<double>
   parse_doubles(const std::string &text,
                 const std::string &entry,

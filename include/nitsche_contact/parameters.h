@@ -222,6 +222,11 @@ namespace NitscheContact
                         double                       length_y,
                         double                       thickness);
 
+  /// For the plate models: 'Geometry/Subdivisions' must not ask for cells
+  /// through the thickness (nz = 1); bad_value naming the model otherwise.
+  void
+  require_one_layer(const CommonParameters &prm, const std::string &model);
+
   /// Parse a list "x1,y1; x2,y2; ..." of 2D points; throws InputError naming
   /// `entry` on malformed input.
   std::vector<dealii::Point<2>>

@@ -259,13 +259,7 @@ namespace NitscheContact
                 "obstacle");
     if (prm.subdivisions.size() < 2)
       bad_value("Geometry/Subdivisions", "", "expected 'nx, ny'");
-    if (prm.subdivisions.size() > 2 && prm.subdivisions[2] != 1)
-      bad_value("Geometry/Subdivisions",
-                std::to_string(prm.subdivisions[0]) + ", " +
-                  std::to_string(prm.subdivisions[1]) + ", " +
-                  std::to_string(prm.subdivisions[2]),
-                "the Kirchhoff plate model has no cells through the "
-                "thickness; give 'nx, ny' (or nz = 1)");
+    require_one_layer(prm, "Kirchhoff");
 
     if (!prm.exact_solution.empty())
       exact_value = make_parsed_function<2>(prm.exact_solution,

@@ -209,13 +209,7 @@ namespace NitscheContact
         std::to_string(Utilities::MPI::n_mpi_processes(comm)) +
         " MPI processes: the Mindlin model runs on one process only "
         "(serial mesh and direct solver); run it without mpirun");
-    if (common.subdivisions[2] != 1)
-      bad_value("Geometry/Subdivisions",
-                std::to_string(common.subdivisions[0]) + ", " +
-                  std::to_string(common.subdivisions[1]) + ", " +
-                  std::to_string(common.subdivisions[2]),
-                "the Mindlin plate model has no cells through the "
-                "thickness; give 'nx, ny' (or nz = 1)");
+    require_one_layer(common, "Mindlin");
 
     if (settings.multigrid && common.initial_refinement == 0 &&
         (common.subdivisions[0] % 2 != 0 || common.subdivisions[1] % 2 != 0))
