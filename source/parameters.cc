@@ -944,10 +944,26 @@ namespace NitscheContact
     , level(prm.obstacle_level)
     , center(prm.sphere_center)
     , radius(prm.sphere_radius)
+    , expression(prm.obstacle_expression)
   {
     if (type == "function")
       function = make_parsed_function<2>(prm.obstacle_expression, "", 1,
                                          "Obstacle/Height");
+  }
+
+  std::string
+  ObstacleSurface::non_finite_message(const unsigned long n_points,
+                                      const Point<2>     *p) const
+  {
+    return "invalid value '" + expression +
+           "' for parameter 'Obstacle/Height': it is not a finite number at " +
+           std::to_string(n_points) + " contact quadrature point" +
+           (n_points == 1 ? "" : "s") +
+           (p ? " (e.g. at (" + number_to_string((*p)[0]) + ", " +
+                  number_to_string((*p)[1]) + "))" :
+                std::string()) +
+           ", between the points where the input check evaluated it; it "
+           "must be a finite number on the whole plate";
   }
 
   double

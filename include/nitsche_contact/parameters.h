@@ -191,12 +191,22 @@ namespace NitscheContact
     double
     height(const dealii::Point<2> &p) const;
 
+    /// The message of a height that is not a finite number at n_points
+    /// contact quadrature points (p: one of them, if known): a parsed
+    /// 'Obstacle/Height' outside its domain between the points of the
+    /// input check's grid, which would otherwise switch the contact off
+    /// there without a word.
+    std::string
+    non_finite_message(unsigned long            n_points,
+                       const dealii::Point<2>  *p = nullptr) const;
+
   private:
     std::string                                    type;
     double                                         level;
     dealii::Point<3>                               center;
     double                                         radius;
     std::unique_ptr<dealii::FunctionParser<2>>     function;
+    std::string                                    expression;
   };
 
   /// Build a FunctionParser from "expr1; expr2; ..." with variables x,y[,z]

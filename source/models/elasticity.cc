@@ -920,6 +920,24 @@ namespace NitscheContact
     assemble_bulk();
 
     trace_constant_value = trace_constant();
+    {
+      // the obstacle height at every contact point (see non_finite_message)
+      FEFaceValues<3> fvf(mapping, fe, contact_face_quadrature,
+                          update_quadrature_points);
+      unsigned long   bad = 0;
+      for_each_contact_face(fvf,
+                            [&](const DoFHandler<3>::active_cell_iterator &,
+                                const unsigned int,
+                                const double) {
+                              for (const Point<3> &x :
+                                   fvf.get_quadrature_points())
+                                bad += !std::isfinite(
+                                  obstacle.height(Point<2>(x[0], x[1])));
+                            });
+      bad = Utilities::MPI::sum(bad, comm);
+      if (bad > 0)
+        throw InputError(obstacle.non_finite_message(bad));
+    }
     const double bound =
       (1. + prm.theta) * (1. + prm.theta) / 4. * trace_constant_value;
     if (prm.gamma0 <= bound && Utilities::MPI::this_mpi_process(comm) == 0)

@@ -503,7 +503,11 @@ namespace NitscheContact
               if (!load_is_constant)
                 load_values[c * nq + q] = load_function->value(x);
               if (!psi_is_constant)
-                psi_values[c * nq + q] = obstacle.height(x) + shift;
+                {
+                  psi_values[c * nq + q] = obstacle.height(x) + shift;
+                  if (!std::isfinite(psi_values[c * nq + q]))
+                    throw InputError(obstacle.non_finite_message(1, &x));
+                }
             }
         }
     previous_status.assign(cells.size() * nq, 255);

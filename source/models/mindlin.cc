@@ -561,6 +561,8 @@ namespace NitscheContact
             const Point<2>  x(v0[0] + p[0] * hx, v0[1] + p[1] * hy);
             gaps[static_cast<std::size_t>(c) * nq + q] =
               -shift - obstacle.height(x);
+            if (!std::isfinite(gaps[static_cast<std::size_t>(c) * nq + q]))
+              throw InputError(obstacle.non_finite_message(1, &x));
           }
       }
   }

@@ -176,6 +176,12 @@ CASES = [
     ("Kirchhoff with cells through the thickness",
      "set Model = kirchhoff\nsubsection Geometry\n  set Subdivisions = 4, 4, 4\nend",
      ["Geometry/Subdivisions", "4, 4, 4", "no cells through the thickness"]),
+    ("obstacle height not finite between the grid points of the input check",
+     "subsection Geometry\n  set Subdivisions = 8, 8, 1\nend\n"
+     "subsection Obstacle\n  set Type = function\n"
+     "  set Height = -1 + 0*sqrt((x-5.05)^2 - 0.0016)\nend",
+     ["Obstacle/Height", "sqrt((x-5.05)^2 - 0.0016)", "not a finite number at",
+      "contact quadrature point"]),
     ("Young's modulus overflowing the stiffness",
      "subsection Material\n  set Young's modulus = 1e305\nend",
      ["Young's modulus", "1e+305", "overflow"]),
