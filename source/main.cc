@@ -166,7 +166,12 @@ main(int argc, char *argv[])
       // box without cells, magnitudes that overflow the cell matrices),
       // after the driver made the output directory: a directory this run
       // created then goes again, so that no partial output remains.
-      const bool existed = std::filesystem::exists(common.output_directory);
+      // (if even that check fails, the directory counts as existing: the
+      // driver then reports it, and nothing is removed)
+      std::error_code status_error;
+      const bool      existed =
+        std::filesystem::exists(common.output_directory, status_error) ||
+        status_error;
       ContactDriver driver(common, MPI_COMM_WORLD);
       try
         {

@@ -53,18 +53,24 @@ namespace NitscheContact
                         const std::string   &expression,
                         const double         length_x,
                         const double         length_y,
-                        const double         thickness)
+                        const double         thickness,
+                        const bool           interior)
   {
     const unsigned int n = 100;
-    for (unsigned int i = 0; i <= n; ++i)
-      for (unsigned int j = 0; j <= n; ++j)
+    // grid points i/n, or the centres (i + 1/2)/n of the grid's cells
+    const double       o = interior ? 0.5 : 0.;
+    const unsigned int m = interior ? n - 1 : n;
+    for (unsigned int i = 0; i <= m; ++i)
+      for (unsigned int j = 0; j <= m; ++j)
         for (unsigned int k = 0; k < (dim == 3 ? 3u : 1u); ++k)
           {
             Point<dim> p;
-            p[0] = length_x * i / n;
-            p[1] = length_y * j / n;
+            p[0] = length_x * (i + o) / n;
+            p[1] = length_y * (j + o) / n;
             if (dim == 3)
-              p[dim - 1] = 0.5 * thickness * (static_cast<double>(k) - 1.);
+              p[dim - 1] = interior ?
+                             thickness * ((k + 0.5) / 3. - 0.5) :
+                             0.5 * thickness * (static_cast<double>(k) - 1.);
             for (unsigned int c = 0; c < f.n_components; ++c)
               {
                 const double v = f.value(p, c);
@@ -80,7 +86,9 @@ namespace NitscheContact
                              "component " + std::to_string(c + 1) + " " :
                              std::string()) +
                             "is " + number_to_string(v) + " at (" + where +
-                            "); it must be a finite number on the whole " +
+                            "); it must be a finite number " +
+                            (interior ? std::string("inside the ") :
+                                        std::string("on the whole ")) +
                             (dim == 3 ? std::string("body [0, ") :
                                         std::string("plate [0, ")) +
                             number_to_string(length_x) + "] x [0, " +
@@ -92,10 +100,10 @@ namespace NitscheContact
 
   template void
   check_finite_on_plate<2>(const Function<2> &, const std::string &,
-                           const std::string &, double, double, double);
+                           const std::string &, double, double, double, bool);
   template void
   check_finite_on_plate<3>(const Function<3> &, const std::string &,
-                           const std::string &, double, double, double);
+                           const std::string &, double, double, double, bool);
 
   void
   require_one_layer(const CommonParameters &prm, const std::string &model)
@@ -530,8 +538,9 @@ namespace NitscheContact
       prm.declare_entry(
         "Stick step on slip reversal", "true", Patterns::Bool(),
         "Newton with Coulomb friction (elasticity and mindlin): at a point "
-        "that slips at this iterate and slipped the other way at the "
-        "previous one (q = sigma_t - r s_t reversed), take the step with "
+        "that slips at this iterate and was in contact (stick or slip) at "
+        "the previous one with q = sigma_t - r s_t pointing the other way "
+        "(q . q_before < 0), take the step with "
         "the stick branch Lambda_t = q of the law instead of its slip "
         "linearisation, which has no stiffness along the slip and made "
         "such points jump over their stick ball (radius F|Lambda_n|, "

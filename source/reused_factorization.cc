@@ -214,8 +214,7 @@ namespace NitscheContact
               error() + ": the Newton matrix is singular; most often a rigid "
               "motion is not restrained: the body is not held by its edge "
               "conditions and not in contact (start it in contact or "
-              "support an edge), or the whole contact surface slides "
-              "because the tangential load exceeds the friction limit");
+              "support an edge)");
           else
             throw ConvergenceFailure(error() + " in the factorisation of the Newton "
                                      "matrix: the matrix has entries that are "

@@ -180,9 +180,10 @@ namespace NitscheContact
     return st;
   }
 
-  /// True when the slip of a point slipping now and at the previous Newton
-  /// iterate reversed its direction (q_now . q_before < 0): between the two
-  /// iterates the step crossed the stick ball of radius tau, which is tiny
+  /// True when a point slips now, was active (stick or slip) at the
+  /// previous Newton iterate, and its q reversed its direction (q_now .
+  /// q_before < 0): between the two iterates the step crossed the stick
+  /// ball of radius tau, which is tiny
   /// against r |s_t| on the plates (tau / r ~ 1e-10), so the slip
   /// linearisation, which has no stiffness along q, can keep jumping over
   /// it (a two-iterate cycle, doc/design.md).

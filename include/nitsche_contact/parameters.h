@@ -223,6 +223,9 @@ namespace NitscheContact
   /// z = -t/2, 0, t/2); a NaN or an infinity (sqrt or log outside their
   /// domain) would otherwise spread through the solution or, in a gap,
   /// silently switch the obstacle off. bad_value(entry, expression) if not.
+  /// interior = true samples the centres of that grid's cells instead (and
+  /// z = -t/3, 0, t/3), for reference solutions, which are only evaluated
+  /// at interior quadrature points and may be singular at a corner.
   template <int dim>
   void
   check_finite_on_plate(const dealii::Function<dim> &f,
@@ -230,7 +233,8 @@ namespace NitscheContact
                         const std::string           &expression,
                         double                       length_x,
                         double                       length_y,
-                        double                       thickness);
+                        double                       thickness,
+                        bool                         interior = false);
 
   /// For the plate models: 'Geometry/Subdivisions' must not ask for cells
   /// through the thickness (nz = 1); bad_value naming the model otherwise.

@@ -278,7 +278,7 @@ namespace NitscheContact
                           exact_hessian_text)})
       if (f != nullptr)
         check_finite_on_plate(*f, entry, text, prm.length_x, prm.length_y,
-                              prm.thickness);
+                              prm.thickness, true);
     if ((exact_gradient || exact_hessian) && !exact_value)
       bad_value(exact_gradient ? "Kirchhoff/Exact gradient" :
                                  "Kirchhoff/Exact Hessian",

@@ -235,7 +235,7 @@ namespace NitscheContact
         check_finite_on_plate(*exact_solution,
                               "Reference solution/Exact solution",
                               common.exact_solution, common.length_x,
-                              common.length_y, common.thickness);
+                              common.length_y, common.thickness, true);
       }
   }
 

@@ -7,12 +7,14 @@ the Coulomb law; the residual stays the law's.
    option the friction stages of the 16x16x1 cycle end in a two-iterate
    cycle (interior points jump over their stick ball of radius
    F|Lambda_n| ~ 0.07 while r |s_t| ~ 200) and the run fails; with it
-   the run converges, the log counts the reversed points, and the
-   converged contact points obey the Coulomb law, checked point by point
-   from contact_points-01.csv (its q, tau and Lambda_t columns): tau =
-   F p; stick points have |q| <= tau and Lambda_t = q; slip points have
-   |Lambda_t| = tau and Lambda_t along q; inactive points no Lambda_t;
-   both kinds occur.
+   the run converges and the log counts the reversed points. On 2 MPI
+   ranks (another partition, another round-off path: 63 instead of 43
+   iterations on cycle 0) it converges to the same solution (reaction and
+   probes to 1e-6, the Newton tolerance) with reversed points of its own.
+   The friction columns of contact_points-01.csv (q, tau, Lambda_t) are
+   those of the law (tau = F p; stick: |q| <= tau and Lambda_t = q; slip:
+   |Lambda_t| = tau along q; inactive: Lambda_t = 0; both kinds occur):
+   this checks the output, since the status comes from the same law.
 2. The same with theta = -1, whose path has no reversed slip: the option
    changes nothing (same iterations, same solution).
 3. Mindlin model, parameters/paper_mindlin_friction.prm on two cycles,
@@ -52,9 +54,14 @@ check(all(c["converged"] for c in with_option["cycles"]),
       "3D theta = 1, F = 0.2: converges with the option (iterations %s)"
       % [c["nonlinear_iterations"] for c in with_option["cycles"]])
 counts = reversed_counts(log)
-check(len(counts) > 0 and min(counts) > 0,
+check(len(counts) > 0,
       "3D theta = 1: %d steps with reversed points (up to %d)"
       % (len(counts), max(counts) if counts else 0))
+parallel, log2 = run(args, "theta1_on_np2", prm_3d(1, "true", 150), np=2)
+check(len(reversed_counts(log2)) > 0, "3D theta = 1, 2 ranks: steps with reversed points")
+for a, b in zip(with_option["cycles"], parallel["cycles"]):
+    compare_cycle("3D theta = 1, cycle %d, 1 and 2 ranks" % a["cycle"], a, b, 1e-6,
+                  ("1 rank", "2 ranks"))
 _, log_off = run(args, "theta1_off", prm_3d(1, "false", 60), expect_status=2)
 check("did not converge in 60 iterations on cycle 1" in log_off and
       not reversed_counts(log_off),
