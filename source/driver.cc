@@ -602,7 +602,14 @@ namespace NitscheContact
                       std::to_string(prm.max_iterations) +
                       " iterations on cycle " + std::to_string(cycle) +
                       " (raise 'Nonlinear solver/Maximum iterations', or set "
-                      "'Allow non-convergence = true' to keep going)");
+                      "'Allow non-convergence = true' to keep going)" +
+                      (prm.friction > 0. && prm.friction_steps == 0 ?
+                         "; with Coulomb friction, 'Nonlinear solver/Friction "
+                         "steps = 4' (each cycle solved frictionless first, "
+                         "then with F raised in 4 steps) converges where "
+                         "the direct frictional solve does not on the "
+                         "paper's 3D plate (parameters/paper_3d_friction.prm)" :
+                         std::string()));
               }
           }
 
