@@ -1137,7 +1137,7 @@ namespace NitscheContact
                          prm.stick_on_reversal;
     std::vector<Tensor<1, 3>> qs;
     const bool compare_q = track_q && previous_q.size() == previous_status.size();
-    if (with_matrix)
+    if (track_q)
       step_correction = 0.;
     Vector<double> cell_difference(n), point_law(n), point_branch(n);
     bool           cell_reversed = false;
@@ -1221,10 +1221,9 @@ namespace NitscheContact
                                                  residual);
       });
     if (with_matrix)
-      {
-        system_matrix.compress(VectorOperation::add);
-        step_correction.compress(VectorOperation::add);
-      }
+      system_matrix.compress(VectorOperation::add);
+    if (track_q)
+      step_correction.compress(VectorOperation::add);
     residual.compress(VectorOperation::add);
     // constrained rows carry no equation
     for (const auto &line : constraints.get_lines())
