@@ -605,8 +605,8 @@ namespace NitscheContact
                       "'Allow non-convergence = true' to keep going)" +
                       (prm.friction > 0. && prm.friction_steps == 0 ?
                          "; with Coulomb friction, 'Nonlinear solver/Friction "
-                         "steps = 4' (each cycle solved frictionless first, "
-                         "then with F raised in 4 steps) converges where "
+                         "steps = 1' (each cycle solved frictionless first, "
+                         "then with F; N > 1 raises F in N steps) converges where "
                          "the direct frictional solve does not on the "
                          "paper's 3D plate (parameters/paper_3d_friction.prm)" :
                          std::string()));

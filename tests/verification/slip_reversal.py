@@ -3,14 +3,15 @@ point whose slip reversed between two iterates uses the stick branch of
 the Coulomb law; the residual stays the law's.
 
 1. 3D model, the paper's plate with F = 0.2, theta = 1, gamma0 = 20,
-   'Friction steps = 4', nested cycles 8x8x1 -> 16x16x1. Without the
+   'Friction steps = 1', nested cycles 8x8x1 -> 16x16x1. Without the
    option the friction stages of the 16x16x1 cycle end in a two-iterate
    cycle (interior points jump over their stick ball of radius
    F|Lambda_n| ~ 0.07 while r |s_t| ~ 200) and the run fails; with it
    the run converges and the log counts the reversed points. On 2 MPI
-   ranks (another partition, another round-off path: 63 instead of 43
-   iterations on cycle 0) it converges to the same solution (reaction and
-   probes to 1e-6, the Newton tolerance) with reversed points of its own.
+   ranks (another partition, another round-off path) it converges to the
+   same solution with reversed points of its own: reaction and probes to
+   1e-5 (Newton tolerance 1e-6 in the energy norm; measured 1e-6 and below,
+   against 4.5e-5 between this reaction and the frictionless one).
    The friction columns of contact_points-01.csv (q, tau, Lambda_t) are
    those of the law (tau = F p; stick: |q| <= tau and Lambda_t = q; slip:
    |Lambda_t| = tau along q; inactive: Lambda_t = 0; both kinds occur):
@@ -39,7 +40,7 @@ def prm_3d(theta, reversal, max_its):
         [("Number of cycles", "2"), ("Nitsche theta", str(theta)),
          ("Nitsche gamma0", "20"), ("Friction coefficient", str(F)),
          ("Maximum iterations", str(max_its))],
-        "\nsubsection Nonlinear solver\n  set Friction steps = 4\n"
+        "\nsubsection Nonlinear solver\n  set Friction steps = 1\n"
         "  set Stick step on slip reversal = %s\nend\n"
         "subsection Output\n  set Contact points = true\nend\n" % reversal)
 
@@ -60,7 +61,7 @@ check(len(counts) > 0,
 parallel, log2 = run(args, "theta1_on_np2", prm_3d(1, "true", 150), np=2)
 check(len(reversed_counts(log2)) > 0, "3D theta = 1, 2 ranks: steps with reversed points")
 for a, b in zip(with_option["cycles"], parallel["cycles"]):
-    compare_cycle("3D theta = 1, cycle %d, 1 and 2 ranks" % a["cycle"], a, b, 1e-6,
+    compare_cycle("3D theta = 1, cycle %d, 1 and 2 ranks" % a["cycle"], a, b, 1e-5,
                   ("1 rank", "2 ranks"))
 _, log_off = run(args, "theta1_off", prm_3d(1, "false", 60), expect_status=2)
 check("did not converge in 60 iterations on cycle 1" in log_off and
