@@ -8,6 +8,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/numerics/data_out.h>
@@ -295,25 +296,6 @@ namespace NitscheContact
     D          = prm.bending_stiffness();
     lambda_eps = prm.lambda() * 0.5 * prm.thickness;
     quadrature = QGauss<2>(n_quadrature);
-
-    // The coercivity bound (1+theta)^2/4 alpha C_I < 1 of the GSV method
-    // with C_I = 5298.2 D, the largest local generalized eigenvalue of
-    // h^4 |D Delta^2 v|^2 against a(v, v) on a square BFS cell for nu = 0.3
-    // (doc/kirchhoff.md); the Newton matrix's inertia check only sees an
-    // indefinite matrix, not every wrong contact set of a too large alpha.
-    if (formulation == Formulation::gsv && prm.theta != -1.)
-      {
-        const double bound = 4. / ((1. + prm.theta) * (1. + prm.theta) * 5298.2);
-        if (alpha_D >= bound)
-          std::cout << "  warning: 'Kirchhoff/Stabilisation alpha' = "
-                    << alpha_D << " is not below the coercivity bound alpha*D < "
-                    << std::setprecision(3) << bound << std::setprecision(6)
-                    << " of theta = " << prm.theta
-                    << " (computed for nu = 0.3 on square cells): the method "
-                       "may return a wrong contact set; lower it (default "
-                       "1e-4) or use theta = -1"
-                    << std::endl;
-      }
   }
 
 
@@ -461,6 +443,24 @@ namespace NitscheContact
       }
 
     build_cell_kit();
+    if (kit.inverse_constant > 0. && prm.theta != -1. && !coercivity_warned)
+      {
+        const double bound =
+          4. / ((1. + prm.theta) * (1. + prm.theta) * kit.inverse_constant / D);
+        if (alpha_D >= bound)
+          {
+            coercivity_warned = true;
+            std::cout << "  warning: 'Kirchhoff/Stabilisation alpha' = "
+                      << alpha_D
+                      << " is not below the coercivity bound alpha*D < "
+                      << bound << " of theta = " << prm.theta
+                      << " on these cells (inverse constant C_I = "
+                      << kit.inverse_constant / D
+                      << " D): the method may return a wrong contact set; "
+                         "lower it (default 1e-4) or use theta = -1"
+                      << std::endl;
+          }
+      }
 
     constant_cell_matrix = kit.bending;
     constant_cell_matrix.add(1., kit.contact_inactive);
@@ -671,6 +671,51 @@ namespace NitscheContact
     kit.contact_all_active.reinit(16, 16);
     for (unsigned int q = 0; q < nq; ++q)
       kit.contact_all_active.add(1., kit.contact_switch[q]);
+
+    // GSV: the inverse-inequality constant C_I of h_K^4 |D Delta^2 v|^2_K
+    // <= C_I a_K(v, v) on a cell (the largest generalized eigenvalue off
+    // the kernel of a_K, the affine functions, where both vanish); the
+    // method is coercive for (1+theta)^2/4 alpha C_I < 1 (doc/theory.md
+    // 4.4; C_I = 5298.2 D on square cells for nu = 0.3).
+    kit.inverse_constant = 0.;
+    if (formulation == Formulation::gsv && kit.sigma_terms)
+      {
+        FullMatrix<double> s(16, 16);
+        const double       h4 = std::pow(kit.h_K, 4);
+        for (unsigned int q = 0; q < nq; ++q)
+          for (unsigned int i = 0; i < 16; ++i)
+            for (unsigned int j = 0; j < 16; ++j)
+              s(i, j) += h4 * D * D * kit.bilaplacians(i, q) *
+                         kit.bilaplacians(j, q) * kit.JxW[q];
+        const auto eigen = [](const FullMatrix<double> &m,
+                              Vector<double>           &values,
+                              FullMatrix<double>       &vectors) {
+          LAPACKFullMatrix<double> l(m.m(), m.n());
+          l = m;
+          l.compute_eigenvalues_symmetric(-std::numeric_limits<double>::max(),
+                                          std::numeric_limits<double>::max(),
+                                          0., values, vectors);
+        };
+        Vector<double>     ea;
+        FullMatrix<double> va;
+        eigen(kit.bending, ea, va);
+        std::vector<unsigned int> kept;
+        for (unsigned int k = 0; k < ea.size(); ++k)
+          if (ea[k] > 1e-10 * ea.linfty_norm())
+            kept.push_back(k);
+        FullMatrix<double> w(16, kept.size()), sw(16, kept.size()),
+          b(kept.size(), kept.size());
+        for (unsigned int k = 0; k < kept.size(); ++k)
+          for (unsigned int i = 0; i < 16; ++i)
+            w(i, k) = va(i, kept[k]) / std::sqrt(ea[kept[k]]);
+        s.mmult(sw, w);
+        w.Tmmult(b, sw);
+        Vector<double>     eb;
+        FullMatrix<double> vb;
+        eigen(b, eb, vb);
+        for (unsigned int k = 0; k < eb.size(); ++k)
+          kit.inverse_constant = std::max(kit.inverse_constant, eb[k]);
+      }
   }
 
 
@@ -1518,6 +1563,8 @@ namespace NitscheContact
     res.extra.emplace_back("max_penetration", max_penetration);
     res.extra.emplace_back("load_total", load_total);
     res.extra.emplace_back("r", kit.r);
+    if (kit.inverse_constant > 0.)
+      res.extra.emplace_back("gsv_inverse_constant", kit.inverse_constant / D);
     factorization->report_inertia(res.extra);
     res.extra.emplace_back("energy_norm", solution_energy_norm());
     return res;

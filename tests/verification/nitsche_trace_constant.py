@@ -10,7 +10,13 @@ contact points C_n stays below gamma0 = 20 (no warning), with the 3x3
 Gauss-Lobatto points (the Q2 face nodes) it exceeds 20 and the program must
 warn; its Newton matrix then has negative eigenvalues (237 on 32x32x1,
 counted by an LDL^T factorisation, doc/benchmarks.md), while gamma0 = 60
-gives none."""
+gives none.
+Kirchhoff GSV: the inverse constant C_I of h_K^4 |D Delta^2 v|^2_K <= C_I
+a_K(v, v) on a BFS cell (summary.json extra 'gsv_inverse_constant' = C_I/D;
+coercive for (1+theta)^2/4 alpha C_I < 1) against doc/theory.md 4.4's
+5298.2 (square cell, nu = 0.3, a separate numpy computation); the warning
+appears for alpha*D = 2e-4 above the theta = 1 bound 1.887e-4 and not for
+1.8e-4, and theta = 0 (bound 7.55e-4) is not warned at 2e-4."""
 import os, re, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from common import parse_args, run, close, check, finish
@@ -68,4 +74,26 @@ s, out = run(args, "paper_lobatto_theta0", prm(2, 0.3125, 0.01, 3, "lobatto", 20
 check(not warned(out), "theta = 0, gamma0 = 20 > C_n/4: no warning")
 s, out = run(args, "paper_lobatto_theta0_low", prm(2, 0.3125, 0.01, 3, "lobatto", 5, 0))
 check(warned(out), "theta = 0, gamma0 = 5 < C_n/4: warned")
+
+kirchhoff = open(os.path.join(here, "..", "..", "parameters", "paper_kirchhoff.prm")).read()
+
+
+def gsv(alpha, theta=1):
+    text = kirchhoff
+    for entry, value in [("Number of cycles", "1"), ("Nitsche theta", str(theta)),
+                         ("Stabilisation alpha", str(alpha))]:
+        text, n = re.subn(r"(?m)^(\s*set %s\s*=).*$" % re.escape(entry),
+                          lambda m: m.group(1) + " " + value, text)
+        check(n == 1, "paper_kirchhoff.prm: one entry '%s'" % entry)
+    return text
+
+
+for alpha, theta, expect in [(2e-4, 1, True), (1.8e-4, 1, False), (2e-4, 0, False)]:
+    s, out = run(args, "gsv_%g_%d" % (alpha, theta), gsv(alpha, theta))
+    close(s["cycles"][0]["extra"]["gsv_inverse_constant"], 5298.2, 1e-4,
+          "Kirchhoff GSV, square cells, nu = 0.3: C_I/D")
+    check(("Stabilisation alpha" in out and "coercivity bound" in out) == expect,
+          "Kirchhoff GSV, alpha*D = %g, theta = %d: %s"
+          % (alpha, theta, "warned" if expect else "no warning"))
 finish()
+

@@ -166,6 +166,9 @@ namespace NitscheContact
       /// and the shapes' u_n and sigma_n linearisations
       std::vector<double> value_rows, operator_rows, u_n_rows, sigma_n_rows;
       std::vector<double>                        load_shape; ///< int N_i
+      /// GSV: C_I of h_K^4 |D Delta^2 v|^2 <= C_I a(v, v) on a cell (0
+      /// otherwise)
+      double inverse_constant = 0.;
     };
 
     void
@@ -255,6 +258,8 @@ namespace NitscheContact
     std::vector<dealii::types::global_dof_index> cell_dofs;
 
     CellKit kit;
+    /// the GSV coercivity warning was printed (once per run)
+    bool coercivity_warned = false;
     /// u[0..15] = the 16 coefficients of v on cell c (lexicographic index)
     void
     cell_coefficients(const dealii::Vector<double> &v,
