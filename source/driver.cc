@@ -538,7 +538,23 @@ namespace NitscheContact
         // constant parts with them
         model.set_load_factor(stages[0].load_factor);
         model.set_friction_scale(stages[0].friction_scale);
-        model.setup_cycle(cycle);
+        try
+          {
+            model.setup_cycle(cycle);
+          }
+        catch (const InputError &e)
+          {
+            // input found invalid on a refined mesh (e.g. an obstacle
+            // function that is not finite at a new contact point): keep
+            // what the earlier cycles computed
+            if (cycle == 0)
+              throw;
+            write_tables();
+            write_summary(model);
+            throw InputError(std::string(e.what()) + " [found on cycle " +
+                             std::to_string(cycle) + "; summary.json holds "
+                             "the cycles before it]");
+          }
         rec.times.setup = timer.wall_time();
         rec.n_dofs      = model.n_dofs();
         rec.h           = model.mesh_size();
@@ -645,7 +661,18 @@ namespace NitscheContact
           pcout << "  deflection at (" << prm.probes[p] << ") = "
                 << r.probes[p] << std::endl;
         for (const auto &e : r.errors)
-          pcout << "  error " << e.first << " = " << e.second << std::endl;
+          {
+            pcout << "  error " << e.first << " = " << e.second << std::endl;
+            if (!std::isfinite(e.second))
+              pcout << "  warning: the error " << e.first
+                    << " is not a finite number: 'Reference solution/Exact "
+                       "solution' is not finite where it is evaluated (the "
+                       "3D model's nodes, the Kirchhoff model's "
+                       "finite-difference stencil, which reaches 2e-3 "
+                       "max(Lx, Ly) beyond the quadrature points: give "
+                       "'Kirchhoff/Exact gradient' and 'Exact Hessian')"
+                    << std::endl;
+          }
       }
 
     write_tables();

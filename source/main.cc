@@ -166,12 +166,26 @@ main(int argc, char *argv[])
       // box without cells, magnitudes that overflow the cell matrices),
       // after the driver made the output directory: a directory this run
       // created then goes again, so that no partial output remains.
-      // (if even that check fails, the directory counts as existing: the
-      // driver then reports it, and nothing is removed)
-      std::error_code status_error;
-      const bool      existed =
-        std::filesystem::exists(common.output_directory, status_error) ||
-        status_error;
+      // The outermost directory of the path that does not exist yet (if
+      // even that check fails, nothing counts as created: the driver then
+      // reports the directory, and nothing is removed). A failure on a
+      // later cycle keeps the directory: the driver wrote the earlier
+      // cycles' summary there.
+      std::filesystem::path created;
+      {
+        std::error_code       status_error;
+        std::filesystem::path p = common.output_directory;
+        while (!p.empty() && !std::filesystem::exists(p, status_error) &&
+               !status_error)
+          {
+            created = p;
+            if (p.parent_path() == p)
+              break;
+            p = p.parent_path();
+          }
+        if (status_error)
+          created.clear();
+      }
       ContactDriver driver(common, MPI_COMM_WORLD);
       try
         {
@@ -179,11 +193,12 @@ main(int argc, char *argv[])
         }
       catch (const InputError &)
         {
-          if (root && !existed)
-            {
-              std::error_code ignored;
-              std::filesystem::remove_all(common.output_directory, ignored);
-            }
+          std::error_code ignored;
+          if (root && !created.empty() &&
+              !std::filesystem::exists(common.output_directory +
+                                         "/summary.json",
+                                       ignored))
+            std::filesystem::remove_all(created, ignored);
           throw;
         }
       if (root)

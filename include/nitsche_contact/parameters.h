@@ -224,8 +224,11 @@ namespace NitscheContact
   /// domain) would otherwise spread through the solution or, in a gap,
   /// silently switch the obstacle off. bad_value(entry, expression) if not.
   /// interior = true samples the centres of that grid's cells instead (and
-  /// z = -t/3, 0, t/3), for reference solutions, which are only evaluated
-  /// at interior quadrature points and may be singular at a corner.
+  /// z = -t/3, 0, t/3): for the plates' reference solutions, which the
+  /// error norms evaluate at interior quadrature points (and, for the
+  /// Kirchhoff model without exact derivatives, a difference stencil
+  /// around them), and which may be singular at a corner; the driver warns
+  /// when an error norm is not finite.
   template <int dim>
   void
   check_finite_on_plate(const dealii::Function<dim> &f,

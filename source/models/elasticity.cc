@@ -489,7 +489,7 @@ namespace NitscheContact
         check_finite_on_plate(*exact_solution,
                               "Reference solution/Exact solution",
                               prm.exact_solution, prm.length_x, prm.length_y,
-                              prm.thickness, true);
+                              prm.thickness);
       }
   }
 

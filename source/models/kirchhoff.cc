@@ -82,9 +82,10 @@ namespace NitscheContact
         Patterns::Double(0.),
         "GSV stabilisation parameter given as the dimensionless product "
         "alpha*D (alpha = value/D), with h_K = the longest side of the cell; "
-        "r = 1/(alpha h_K^4). Coercive (safe) range for nu = 0.3: theta = 1 "
-        "needs alpha*D < 1.89e-4, theta = 0 needs alpha*D < 7.5e-4, theta = "
-        "-1 any alpha*D > 0. 0 gives the pure penalty method p = [psi - "
+        "r = 1/(alpha h_K^4). Coercive (safe) range for nu = 0.3 on square "
+        "cells: theta = 1 needs alpha*D < 1.89e-4, theta = 0 needs alpha*D "
+        "< 7.5e-4, theta = -1 any alpha*D > 0 (elongated cells lower the "
+        "bound: the program computes it for its cells and warns). 0 gives the pure penalty method p = [psi - "
         "w]_+ / kappa (then kappa must be > 0). Ignored by the 'nitsche' "
         "formulation.");
       prm.declare_entry(
@@ -210,8 +211,10 @@ namespace NitscheContact
           common.reuse_factorization,
           common.symmetric_factorization,
           formulation == Formulation::gsv ?
-            "lower 'Kirchhoff/Stabilisation alpha' (theory bound alpha D < "
-            "1.89e-4 for nu = 0.3)" :
+            "lower 'Kirchhoff/Stabilisation alpha' below the coercivity "
+            "bound 4/((1+theta)^2 C_I/D) with C_I/D = gsv_inverse_constant "
+            "in summary.json (1.89e-4 for theta = 1 on square cells, nu = "
+            "0.3)" :
             "raise 'Contact/Nitsche gamma0' or use theta = -1"});
       use_multigrid = (param.get("Linear solver") == "multigrid");
       krylov_tolerance = param.get_double("Krylov tolerance");
@@ -457,7 +460,7 @@ namespace NitscheContact
                       << " on these cells (inverse constant C_I = "
                       << kit.inverse_constant / D
                       << " D): the method may return a wrong contact set; "
-                         "lower it (default 1e-4) or use theta = -1"
+                         "give a value below the bound or use theta = -1"
                       << std::endl;
           }
       }
@@ -492,6 +495,8 @@ namespace NitscheContact
       load_values.resize(cells.size() * nq);
     if (!psi_is_constant)
       psi_values.resize(cells.size() * nq);
+    unsigned long bad_heights = 0;
+    Point<2>      bad_point;
     if (!load_is_constant || !psi_is_constant)
       for (unsigned int c = 0; c < cells.size(); ++c)
         {
@@ -505,11 +510,14 @@ namespace NitscheContact
               if (!psi_is_constant)
                 {
                   psi_values[c * nq + q] = obstacle.height(x) + shift;
-                  if (!std::isfinite(psi_values[c * nq + q]))
-                    throw InputError(obstacle.non_finite_message(1, &x));
+                  if (!std::isfinite(psi_values[c * nq + q]) &&
+                      bad_heights++ == 0)
+                    bad_point = x;
                 }
             }
         }
+    if (bad_heights > 0)
+      throw InputError(obstacle.non_finite_message(bad_heights, &bad_point));
     previous_status.assign(cells.size() * nq, 255);
 
     // |F| at load factor 1, the scale of the residual norm (load_norm())

@@ -551,7 +551,9 @@ namespace NitscheContact
     // 'bottom face': the face x3 = -eps must stay above z_obs, so u_n =
     // -w <= g = -eps - z_obs; 'mid-plane': w >= z_obs, g = -z_obs.
     gaps.resize(static_cast<std::size_t>(nx) * ny * nq);
-    const double shift = prm.obstacle_level_is_midplane ? 0. : eps;
+    const double  shift       = prm.obstacle_level_is_midplane ? 0. : eps;
+    unsigned long bad_heights = 0;
+    Point<2>      bad_point;
     for (unsigned int c = 0; c < cell_grid.size(); ++c)
       {
         const Point<2> v0 = cell_grid[c]->vertex(0);
@@ -561,10 +563,13 @@ namespace NitscheContact
             const Point<2>  x(v0[0] + p[0] * hx, v0[1] + p[1] * hy);
             gaps[static_cast<std::size_t>(c) * nq + q] =
               -shift - obstacle.height(x);
-            if (!std::isfinite(gaps[static_cast<std::size_t>(c) * nq + q]))
-              throw InputError(obstacle.non_finite_message(1, &x));
+            if (!std::isfinite(gaps[static_cast<std::size_t>(c) * nq + q]) &&
+                bad_heights++ == 0)
+              bad_point = x;
           }
       }
+    if (bad_heights > 0)
+      throw InputError(obstacle.non_finite_message(bad_heights, &bad_point));
   }
 
 

@@ -3,6 +3,7 @@ names the entry and the offending value (and, for range errors, what is
 allowed); --help and --print-parameters must exit 0. No output directory
 may be created for a rejected parameter file."""
 import argparse
+import json
 import os
 import shutil
 import subprocess
@@ -270,13 +271,42 @@ with open(edge, "w") as f:
             "  set Profile line = -0.0000000005, 5; 10.0000000005, 5\nend\n"
             % os.path.join(args.workdir, "edge-out"))
 r = execute([edge])
-import json
 summary = json.load(open(os.path.join(args.workdir, "edge-out", "summary.json")))
 profile = open(os.path.join(args.workdir, "edge-out", "profile.csv")).read()
 check(r.returncode == 0 and summary["cycles"][-1]["probes"] == [0, 0] and
       "nan" not in profile.lower(),
       "probe points and profile line 5e-10 outside the clamped edges: w = 0 "
       "there, no NaN (exit %d, probes %s)" % (r.returncode, summary["cycles"][-1]["probes"]))
+
+# Input found invalid only on a refined mesh (an obstacle function that is
+# not finite in a thin band, first met by the contact points of cycle 1):
+# exit 1 naming the cycle, and the converged cycle 0 stays in summary.json.
+# The same failure on cycle 0 with a nested new output directory removes
+# what the run created, the parent included.
+band = ("set Model = kirchhoff\nsubsection Geometry\n  set Subdivisions = 16, 16\n"
+        "  set Number of cycles = 2\nend\nsubsection Obstacle\n  set Type = function\n"
+        "  set Height = -1 + 0*sqrt((x-5.0105)^2 - 1e-6)\nend\n")
+late = os.path.join(args.workdir, "late.prm")
+late_out = os.path.join(args.workdir, "late-out")
+shutil.rmtree(late_out, ignore_errors=True)
+with open(late, "w") as f:
+    f.write(band + "subsection Output\n  set Directory = %s\n  set Format = none\nend\n" % late_out)
+r = execute([late])
+kept = os.path.join(late_out, "summary.json")
+check(r.returncode == 1 and "Obstacle/Height" in r.stderr and "found on cycle 1" in r.stderr
+      and os.path.exists(kept) and len(json.load(open(kept))["cycles"]) == 1,
+      "obstacle not finite on cycle 1 only: exit %d (1), cycle named, cycle 0 kept: %s"
+      % (r.returncode, r.stderr.strip()[-120:]))
+nested_parent = os.path.join(args.workdir, "nested-parent")
+shutil.rmtree(nested_parent, ignore_errors=True)
+with open(late, "w") as f:
+    f.write(band.replace("16, 16", "32, 32").replace("set Number of cycles = 2", "set Number of cycles = 1")
+            + "subsection Output\n  set Directory = %s/child\n  set Format = none\nend\n"
+            % nested_parent)
+r = execute([late])
+check(r.returncode == 1 and "Obstacle/Height" in r.stderr and not os.path.exists(nested_parent),
+      "the same on cycle 0 with a new nested output directory: exit %d (1), nothing left"
+      % r.returncode)
 
 r = execute([os.path.join(args.workdir, "does_not_exist.prm")])
 check(r.returncode == 1 and "does_not_exist.prm" in r.stderr,
