@@ -1,4 +1,7 @@
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/vector.h>
 #include <deal.II/base/utilities.h>
 
 #include <nitsche_contact/parameters.h>
@@ -116,6 +119,46 @@ namespace NitscheContact
                 "the " + model +
                   " plate model has no cells through the thickness; give "
                   "'nx, ny' (or nz = 1)");
+  }
+
+  double
+  largest_generalized_eigenvalue(const FullMatrix<double> &s,
+                                 const FullMatrix<double> &a)
+  {
+    const auto eigen = [](const FullMatrix<double> &m,
+                          Vector<double>           &values,
+                          FullMatrix<double>       &vectors) {
+      LAPACKFullMatrix<double> l(m.m(), m.n());
+      l = m;
+      l.compute_eigenvalues_symmetric(-std::numeric_limits<double>::max(),
+                                      std::numeric_limits<double>::max(),
+                                      0.,
+                                      values,
+                                      vectors);
+    };
+    // a = V diag(ea) V^T; with W = V_kept diag(ea_kept)^(-1/2) the problem
+    // becomes the ordinary eigenproblem of W^T s W
+    Vector<double>     ea;
+    FullMatrix<double> va;
+    eigen(a, ea, va);
+    std::vector<unsigned int> kept;
+    for (unsigned int k = 0; k < ea.size(); ++k)
+      if (ea[k] > 1e-10 * ea.linfty_norm())
+        kept.push_back(k);
+    const unsigned int n = a.m(), m = kept.size();
+    FullMatrix<double> w(n, m), sw(n, m), b(m, m);
+    for (unsigned int k = 0; k < m; ++k)
+      for (unsigned int i = 0; i < n; ++i)
+        w(i, k) = va(i, kept[k]) / std::sqrt(ea[kept[k]]);
+    s.mmult(sw, w);
+    w.Tmmult(b, sw);
+    Vector<double>     eb;
+    FullMatrix<double> vb;
+    eigen(b, eb, vb);
+    double largest = 0.;
+    for (unsigned int k = 0; k < eb.size(); ++k)
+      largest = std::max(largest, eb[k]);
+    return largest;
   }
 
   std::vector<double>

@@ -9,6 +9,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/point.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/base/quadrature.h>
 
 #include <nitsche_contact/nitsche_kernel.h>
@@ -243,6 +244,15 @@ namespace NitscheContact
   /// through the thickness (nz = 1); bad_value naming the model otherwise.
   void
   require_one_layer(const CommonParameters &prm, const std::string &model);
+
+  /// The largest mu with s v = mu a v for v off the kernel of the symmetric
+  /// positive semidefinite a (eigenvalues above 1e-10 of its largest), s
+  /// symmetric and zero on that kernel: the constant of an inverse
+  /// inequality v^T s v <= mu v^T a v on one cell (the 3D Nitsche trace
+  /// constant, the Kirchhoff GSV constant C_I).
+  double
+  largest_generalized_eigenvalue(const dealii::FullMatrix<double> &s,
+                                 const dealii::FullMatrix<double> &a);
 
   /// Parse a list "x1,y1; x2,y2; ..." of 2D points; throws InputError naming
   /// `entry` on malformed input.

@@ -1008,15 +1008,6 @@ namespace NitscheContact
                 }
               // max of s(v,v) / (E a(v,v)) on the complement of the rigid
               // motions (the kernel of a, where s vanishes too)
-              const auto eigen = [](const FullMatrix<double> &mat,
-                                    Vector<double>           &values,
-                                    FullMatrix<double>       &vectors) {
-                LAPACKFullMatrix<double> l(mat.m(), mat.n());
-                l = mat;
-                l.compute_eigenvalues_symmetric(
-                  -std::numeric_limits<double>::max(),
-                  std::numeric_limits<double>::max(), 0., values, vectors);
-              };
               bool finite = true;
               for (const FullMatrix<double> *m : {&a, &s})
                 for (unsigned int i = 0; i < n; ++i)
@@ -1027,26 +1018,7 @@ namespace NitscheContact
                   non_finite = 1;
                   break;
                 }
-              Vector<double>     eval;
-              FullMatrix<double> evec;
-              eigen(a, eval, evec);
-              const double       largest = eval.linfty_norm();
-              std::vector<unsigned int> kept;
-              for (unsigned int k = 0; k < eval.size(); ++k)
-                if (eval[k] > 1e-10 * largest)
-                  kept.push_back(k);
-              const unsigned int m = kept.size();
-              FullMatrix<double> w(n, m), sw(n, m), b(m, m);
-              for (unsigned int k = 0; k < m; ++k)
-                for (unsigned int i = 0; i < n; ++i)
-                  w(i, k) = evec(i, kept[k]) / std::sqrt(eval[kept[k]]);
-              s.mmult(sw, w);
-              w.Tmmult(b, sw);
-              Vector<double>     eb;
-              FullMatrix<double> vb;
-              eigen(b, eb, vb);
-              for (unsigned int k = 0; k < eb.size(); ++k)
-                c_n = std::max(c_n, eb[k] / prm.youngs_modulus);
+              c_n = largest_generalized_eigenvalue(s, a) / prm.youngs_modulus;
             }
     // (on every rank: a rank without contact cells must not wait alone)
     if (Utilities::MPI::max(non_finite, comm) > 0)

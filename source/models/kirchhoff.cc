@@ -8,7 +8,6 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/numerics/data_out.h>
@@ -695,34 +694,7 @@ namespace NitscheContact
             for (unsigned int j = 0; j < 16; ++j)
               s(i, j) += h4 * D * D * kit.bilaplacians(i, q) *
                          kit.bilaplacians(j, q) * kit.JxW[q];
-        const auto eigen = [](const FullMatrix<double> &m,
-                              Vector<double>           &values,
-                              FullMatrix<double>       &vectors) {
-          LAPACKFullMatrix<double> l(m.m(), m.n());
-          l = m;
-          l.compute_eigenvalues_symmetric(-std::numeric_limits<double>::max(),
-                                          std::numeric_limits<double>::max(),
-                                          0., values, vectors);
-        };
-        Vector<double>     ea;
-        FullMatrix<double> va;
-        eigen(kit.bending, ea, va);
-        std::vector<unsigned int> kept;
-        for (unsigned int k = 0; k < ea.size(); ++k)
-          if (ea[k] > 1e-10 * ea.linfty_norm())
-            kept.push_back(k);
-        FullMatrix<double> w(16, kept.size()), sw(16, kept.size()),
-          b(kept.size(), kept.size());
-        for (unsigned int k = 0; k < kept.size(); ++k)
-          for (unsigned int i = 0; i < 16; ++i)
-            w(i, k) = va(i, kept[k]) / std::sqrt(ea[kept[k]]);
-        s.mmult(sw, w);
-        w.Tmmult(b, sw);
-        Vector<double>     eb;
-        FullMatrix<double> vb;
-        eigen(b, eb, vb);
-        for (unsigned int k = 0; k < eb.size(); ++k)
-          kit.inverse_constant = std::max(kit.inverse_constant, eb[k]);
+        kit.inverse_constant = largest_generalized_eigenvalue(s, kit.bending);
       }
   }
 
