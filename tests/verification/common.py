@@ -59,6 +59,55 @@ def shipped_prm(name, replacements, extra=""):
     return text + extra
 
 
+# The elastic block of verification/elasticity_friction pressed onto a plane
+# by a top traction q, sheared by a tangential top traction s, held
+# tangentially only by Coulomb friction F (x-faces free).
+SLIDING_BLOCK = """
+set Model = elasticity
+subsection Geometry
+  set Length x = 2
+  set Length y = 1
+  set Thickness = 0.2
+  set Edge conditions = free, free, symmetry, symmetry
+  set Subdivisions = %(sub)s
+end
+subsection Material
+  set Young's modulus = 100
+  set Poisson ratio = 0.3
+end
+subsection Load
+  set Transverse load = %(q)r
+end
+subsection Obstacle
+  set Type = plane
+  set Level = -0.1
+end
+subsection Contact
+  set Nitsche theta = %(theta)d
+  set Nitsche gamma0 = 20
+  set Friction coefficient = %(F)r
+end
+subsection Elasticity
+  set Polynomial degree = %(degree)d
+  set Load applied as = top traction
+  set Top tangential traction = %(s)r; 0
+end
+subsection Nonlinear solver
+  set Scheme = %(scheme)s
+  set Tolerance = 1e-11
+  set Maximum iterations = %(maxit)d
+end
+subsection Output
+  set Probe points = 1, 0.5
+end
+"""
+
+
+def sliding_block_prm(sub, q, theta, F, degree, s, scheme="newton", maxit=60):
+    return SLIDING_BLOCK % dict(sub=sub, q=q, theta=theta, F=F, degree=degree,
+                                s=s, scheme=scheme, maxit=maxit)
+
+
 failures = []
 
 

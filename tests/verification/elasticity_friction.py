@@ -34,57 +34,16 @@ tangential stiffness at sliding points and, here, does not converge or
 meets a singular frozen system (exit status 2) once slip occurs.
 Runtime ~15 s in Release.
 """
-from common import parse_args, run, check, finish
+from common import parse_args, run, check, finish, sliding_block_prm
 
 args = parse_args()
 
 P, F, AREA = 1.0, 0.5, 2.0
 
-TEMPLATE = """
-set Model = elasticity
-subsection Geometry
-  set Length x = 2
-  set Length y = 1
-  set Thickness = 0.2
-  set Edge conditions = free, free, symmetry, symmetry
-  set Subdivisions = %(sub)s
-end
-subsection Material
-  set Young's modulus = 100
-  set Poisson ratio = 0.3
-end
-subsection Load
-  set Transverse load = %(q)r
-end
-subsection Obstacle
-  set Type = plane
-  set Level = -0.1
-end
-subsection Contact
-  set Nitsche theta = %(theta)d
-  set Nitsche gamma0 = 20
-  set Friction coefficient = %(F)r
-end
-subsection Elasticity
-  set Polynomial degree = %(degree)d
-  set Load applied as = top traction
-  set Top tangential traction = %(s)r; 0
-end
-subsection Nonlinear solver
-  set Scheme = %(scheme)s
-  set Tolerance = 1e-11
-  set Maximum iterations = %(maxit)d
-end
-subsection Output
-  set Probe points = 1, 0.5
-end
-"""
-
-
 def prm(ratio, theta=1, degree=1, scheme="newton", maxit=60):
-    return TEMPLATE % dict(sub="8, 4, 2" if degree == 1 else "4, 2, 1",
-                           q=-P, theta=theta, F=F, degree=degree,
-                           s=ratio * F * P, scheme=scheme, maxit=maxit)
+    return sliding_block_prm(sub="8, 4, 2" if degree == 1 else "4, 2, 1",
+                             q=-P, theta=theta, F=F, degree=degree,
+                             s=ratio * F * P, scheme=scheme, maxit=maxit)
 
 
 def name(ratio, theta=1, degree=1, scheme="newton"):

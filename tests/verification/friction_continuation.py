@@ -28,7 +28,7 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import shipped_prm, parse_args, run, check, close, finish
+from common import shipped_prm, parse_args, run, check, close, finish, sliding_block_prm
 
 args = parse_args()
 
@@ -128,36 +128,8 @@ check(iteration_lines(stage0) == reference and len(reference) > 10,
 # 2c. a body that only friction holds tangentially (the block of
 # elasticity_friction.py: free x-faces, tangential top traction) has no
 # frictionless solution: the continuation must say why it fails
-BLOCK = """
-set Model = elasticity
-subsection Geometry
-  set Length x = 2
-  set Length y = 1
-  set Thickness = 0.2
-  set Edge conditions = free, free, symmetry, symmetry
-  set Subdivisions = 4, 2, 1
-end
-subsection Material
-  set Young's modulus = 100
-end
-subsection Load
-  set Transverse load = -1
-end
-subsection Obstacle
-  set Level = -0.1
-end
-subsection Contact
-  set Friction coefficient = 0.5
-end
-subsection Elasticity
-  set Polynomial degree = 1
-  set Load applied as = top traction
-  set Top tangential traction = 0.25; 0
-end
-subsection Nonlinear solver
-  set Friction steps = 2
-end
-"""
+BLOCK = sliding_block_prm(sub="4, 2, 1", q=-1, theta=1, F=0.5, degree=1, s=0.25) + \
+    "subsection Nonlinear solver\n  set Friction steps = 2\nend\n"
 _, log = run(args, "block_steps", BLOCK, expect_status=2)
 check("frictionless stage of 'Nonlinear solver/Friction steps' = 2" in log and
       "Friction steps = 0" in log,
