@@ -673,6 +673,10 @@ namespace NitscheContact
                        "'Kirchhoff/Exact gradient' and 'Exact Hessian')"
                     << std::endl;
           }
+        // after every cycle: a run stopped later (out of memory, killed)
+        // keeps the cycles it finished
+        if (cycle + 1 < prm.n_cycles)
+          write_summary(model);
       }
 
     write_tables();

@@ -10,6 +10,7 @@
 #include <nitsche_contact/parameters.h>
 
 #include <filesystem>
+#include <new>
 #include <sstream>
 #include <fstream>
 #include <iostream>
@@ -41,6 +42,16 @@ namespace
     return path;
   }
 
+  // After a failure on some MPI ranks only (out of memory, an internal
+  // error), the other ranks may wait in a collective operation for ever:
+  // end the whole job.
+  void
+  abort_other_ranks(const unsigned int n_ranks, const int status)
+  {
+    if (n_ranks > 1)
+      MPI_Abort(MPI_COMM_WORLD, status);
+  }
+
   void
   print_usage(std::ostream &out)
   {
@@ -58,7 +69,7 @@ namespace
          "\n"
          "Run in parallel with 'mpirun -np N nitsche-contact FILE.prm'.\n"
          "Exit status: 0 success, 1 invalid input, 2 nonlinear solver did not\n"
-         "converge, 3 internal error.\n";
+         "converge, 3 out of memory or internal error.\n";
   }
 } // namespace
 
@@ -73,6 +84,10 @@ main(int argc, char *argv[])
   dealii::Utilities::MPI::MPI_InitFinalize mpi(
     argc, argv, dealii::numbers::invalid_unsigned_int);
   const bool root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  const unsigned int rank =
+    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+  const unsigned int n_ranks =
+    dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
 
   dealii::ParameterHandler prm;
   CommonParameters::declare(prm);
@@ -187,18 +202,27 @@ main(int argc, char *argv[])
           created.clear();
       }
       ContactDriver driver(common, MPI_COMM_WORLD);
+      // invalid input found on the mesh, or out of memory: remove what
+      // this run created unless a cycle finished (summary.json)
+      const auto remove_created = [&]() {
+        std::error_code ignored;
+        if (root && !created.empty() &&
+            !std::filesystem::exists(common.output_directory + "/summary.json",
+                                     ignored))
+          std::filesystem::remove_all(created, ignored);
+      };
       try
         {
           driver.run(*model);
         }
       catch (const InputError &)
         {
-          std::error_code ignored;
-          if (root && !created.empty() &&
-              !std::filesystem::exists(common.output_directory +
-                                         "/summary.json",
-                                       ignored))
-            std::filesystem::remove_all(created, ignored);
+          remove_created();
+          throw;
+        }
+      catch (const std::bad_alloc &)
+        {
+          remove_created();
           throw;
         }
       if (root)
@@ -219,10 +243,29 @@ main(int argc, char *argv[])
         std::cerr << "nitsche-contact: error: " << e.what() << std::endl;
       return 2;
     }
+  // The failures below may hit one MPI rank only, while the others wait in
+  // a collective operation: abort the whole job then instead of hanging.
+  catch (const std::bad_alloc &)
+    {
+      std::cerr
+        << "nitsche-contact: error: out of memory (std::bad_alloc"
+        << (n_ranks > 1 ? " on rank " + std::to_string(rank) : std::string())
+        << "): the mesh and its linear solver need more memory than is "
+           "available. Each cycle multiplies the number of DoFs by about 4 "
+           "(8 when refining through the thickness): lower 'Geometry/"
+           "Subdivisions', 'Initial refinement' or 'Number of cycles', use "
+           "'Linear solver = multigrid' for the plates, or run the 3D model "
+           "on more MPI processes. Cycles that finished are in the output "
+           "directory's summary.json."
+        << std::endl;
+      abort_other_ranks(n_ranks, 3);
+      return 3;
+    }
   catch (const std::exception &e)
     {
       std::cerr << "nitsche-contact: internal error: " << e.what()
                 << std::endl;
+      abort_other_ranks(n_ranks, 3);
       return 3;
     }
   catch (...)
@@ -230,6 +273,7 @@ main(int argc, char *argv[])
       std::cerr << "nitsche-contact: internal error: an exception of unknown "
                    "type"
                 << std::endl;
+      abort_other_ranks(n_ranks, 3);
       return 3;
     }
   return 0;

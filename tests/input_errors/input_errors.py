@@ -5,6 +5,7 @@ may be created for a rejected parameter file."""
 import argparse
 import json
 import os
+import resource
 import shutil
 import subprocess
 import sys
@@ -307,6 +308,25 @@ r = execute([late])
 check(r.returncode == 1 and "Obstacle/Height" in r.stderr and not os.path.exists(nested_parent),
       "the same on cycle 0 with a new nested output directory: exit %d (1), nothing left"
       % r.returncode)
+
+# Out of memory (a 3000 x 3000 Kirchhoff mesh under a 1 GB address-space
+# limit): exit 3 with a message that says so and what to lower, and no
+# output directory left behind (no cycle finished).
+oom = os.path.join(args.workdir, "oom.prm")
+oom_out = os.path.join(args.workdir, "oom-parent")
+shutil.rmtree(oom_out, ignore_errors=True)
+with open(oom, "w") as f:
+    f.write("set Model = kirchhoff\nsubsection Geometry\n  set Subdivisions = 3000, 3000\n"
+            "end\nsubsection Output\n  set Directory = %s/out\n  set Format = none\nend\n"
+            % oom_out)
+r = subprocess.run([args.exe, oom], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                   text=True, cwd=args.workdir,
+                   preexec_fn=lambda: resource.setrlimit(resource.RLIMIT_AS,
+                                                         (10**9, 10**9)))
+check(r.returncode == 3 and "out of memory" in r.stderr and "Geometry/Subdivisions" in r.stderr
+      and not os.path.exists(oom_out),
+      "out of memory on cycle 0: exit %d (3), message, nothing left: %s"
+      % (r.returncode, r.stderr.strip()[-160:]))
 
 r = execute([os.path.join(args.workdir, "does_not_exist.prm")])
 check(r.returncode == 1 and "does_not_exist.prm" in r.stderr,
