@@ -19,7 +19,9 @@
 // derivative and the potential of R.
 #include <deal.II/base/logstream.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/function.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/numerics/vector_tools.h>
 
 #include <nitsche_contact/model_factory.h>
 #include <nitsche_contact/models/elasticity.h>
@@ -27,6 +29,7 @@
 #include <nitsche_contact/models/mindlin.h>
 #include <nitsche_contact/parameters.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -208,6 +211,97 @@ namespace
     if (en_err > 1e-6)
       out << "  relative error " << en_err << std::endl;
   }
+
+  // The Mindlin bottom-face kinematics against their closed form (doc/
+  // theory.md 3.3) for prescribed fields that the Q1 components represent
+  // exactly (free edges: no constraints; F > 0 so that the records carry
+  // the slip and q): on the lower face x3 = -eps
+  //   u_t = ubar - eps phi,  sigma_n = lambda (div ubar - eps div phi),
+  //   sigma_t = -mu (phi + grad w),  q = sigma_t - r u_t,
+  // with the 3D Lame constants and r = gamma0 E / t. A sign error in the
+  // eps-coupling of membrane and bending (which the energy-based checks
+  // above cannot see: sigma_n enters the theta-terms squared) fails here.
+  class PlateField : public Function<2>
+  {
+  public:
+    PlateField(const std::vector<double> &c)
+      : Function<2>(5)
+      , c(c)
+    {}
+    // components (w, phi_x, phi_y, ubar_x, ubar_y), each c0 + c1 x + c2 y
+    double
+    value(const Point<2> &p, const unsigned int i) const override
+    {
+      return c[3 * i] + c[3 * i + 1] * p[0] + c[3 * i + 2] * p[1];
+    }
+    std::vector<double> c;
+  };
+
+  void
+  check_mindlin_kinematics()
+  {
+    const double E = 2e5, nu = 0.3, t = 0.01, eps = t / 2, gamma0 = 20;
+    const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)),
+                 mu     = E / (2 * (1 + nu)), r = gamma0 * E / t;
+    ParameterHandler prm;
+    CommonParameters::declare(prm);
+    declare_model_parameters(prm);
+    prm.parse_input_from_string(
+      "set Model = mindlin\n"
+      "subsection Geometry\n  set Length x = 10\n  set Length y = 10\n"
+      "  set Thickness = 0.01\n  set Edge conditions = free, free, free, free\n"
+      "  set Subdivisions = 3, 2\nend\n"
+      "subsection Obstacle\n  set Level = -1\nend\n"
+      "subsection Contact\n  set Nitsche gamma0 = 20\n"
+      "  set Friction coefficient = 0.2\nend\n"
+      "subsection Output\n  set Format = none\n  set Directory = output-dir\nend\n");
+    CommonParameters common;
+    common.parse(prm);
+    auto          base_model = create_model(common, prm, MPI_COMM_WORLD);
+    MindlinModel &model      = dynamic_cast<MindlinModel &>(*base_model);
+    model.setup_cycle(0);
+
+    double err_n = 0., err_t = 0., err_q = 0.;
+    // (1) w = 0, phi = (k1 x, k2 y), ubar = (m1 x, m2 y): sigma_n and u_t
+    {
+      const double k1 = 0.03, k2 = -0.05, m1 = 2e-4, m2 = 3e-4;
+      VectorTools::interpolate(model.get_dof_handler(),
+                               PlateField({0, 0, 0, 0, k1, 0, 0, 0, k2,
+                                           0, m1, 0, 0, 0, m2}),
+                               model.iterate());
+      const double sigma_n = lambda * (m1 + m2 - eps * (k1 + k2));
+      for (const ContactPointRecord &p : model.contact_points())
+        {
+          err_n = std::max(err_n, std::abs(p.sigma_n - sigma_n) /
+                                    std::abs(sigma_n));
+          const Tensor<1, 3> u_t({(m1 - eps * k1) * p.x,
+                                  (m2 - eps * k2) * p.y, 0.});
+          err_t = std::max(err_t, (p.slip - u_t).norm() / 1e-3);
+        }
+    }
+    // (2) constant phi, ubar = 0, w = 0: sigma_t = -mu phi (the MITC4
+    // shear is exact for it), u_t = -eps phi, q = sigma_t - r u_t
+    {
+      const double f1 = 1e-3, f2 = -2e-3;
+      VectorTools::interpolate(model.get_dof_handler(),
+                               PlateField({0, 0, 0, f1, 0, 0, f2, 0, 0,
+                                           0, 0, 0, 0, 0, 0}),
+                               model.iterate());
+      const Tensor<1, 3> phi({f1, f2, 0.});
+      const Tensor<1, 3> q = -mu * phi + r * eps * phi;
+      for (const ContactPointRecord &p : model.contact_points())
+        err_q = std::max(err_q, (p.q - q).norm() / q.norm());
+    }
+    out << "mindlin kinematics: sigma_n = lambda (div ubar - eps div phi): "
+        << (err_n <= 1e-10 ? "ok" : "FAILED") << std::endl
+        << "mindlin kinematics: u_t = ubar - eps phi: "
+        << (err_t <= 1e-10 ? "ok" : "FAILED") << std::endl
+        << "mindlin kinematics: q = -mu (phi + grad w) - r u_t: "
+        << (err_q <= 1e-10 ? "ok" : "FAILED") << std::endl;
+    if (std::max({err_n, err_t, err_q}) > 1e-10)
+      out << "  relative errors " << err_n << ", " << err_t << ", " << err_q
+          << std::endl;
+  }
 } // namespace
 
 int
@@ -246,6 +340,7 @@ main(int argc, char **argv)
                                 std::to_string(int(theta)),
                               prm_text("mindlin", theta, 0.2, ""),
                               12);
+  check_mindlin_kinematics();
   // 3D: the paper's plate on 6 x 6 x 1 Q2 cells; its bottom face reaches
   // the obstacle after a few full Newton steps
   for (const double theta : {1., 0., -1.})

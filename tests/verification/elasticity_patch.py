@@ -132,6 +132,10 @@ for degree in (1, 2):
                       tag + " contact area %.12g == 1" % c["contact_area"])
                 check(abs(c["contact_force"] - P * 1.0) <= TOL * P,
                       tag + " contact force %.12g == p * area = %g" % (c["contact_force"], P))
+                # the pressure is uniform: its maximum is p as well
+                check(abs(c["extra"]["max_contact_pressure"] - P) <= TOL * P,
+                      tag + " max contact pressure %.12g == p = %g"
+                      % (c["extra"]["max_contact_pressure"], P))
                 check(c["active_points"] == c["contact_points"],
                       tag + " all %d contact points active" % c["contact_points"])
                 check(abs(c["max_deflection"]) <= TOL * b and

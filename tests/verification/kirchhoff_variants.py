@@ -13,7 +13,7 @@ contact zone forms and the D Delta^2 v terms of GSV are exercised):
 import os, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from common import parse_args, run, close, check, finish
-from kirchhoff_lib.plate import plate_prm
+from kirchhoff_lib.plate import plate_prm, E_UNIT_D
 
 args = parse_args()
 probes = "0.5, 0.5; 0.2, 0.5; 0.1, 0.1"
@@ -90,6 +90,33 @@ for theta in (0, 1, -1):
         check(dev[0] < 0.1 and 5 < dev[0] / dev[1] < 20,
               "Kirchhoff-Nitsche theta=%d: deviation ~ 1/gamma0 (ratio %.2f for gamma0 x10)"
               % (theta, dev[0] / dev[1]))
+
+# The same theta-term exactly, away from contact: a hard simply supported
+# square (D = 1) whose obstacle is far below. Every point is inactive and
+# the Kirchhoff-Nitsche form is a(w,v) - (theta/r) int sigma_n(w) sigma_n(v)
+# with sigma_n = lambda (t/2) Delta w (3D Hooke law with Kirchhoff
+# kinematics on the lower face, doc/theory.md 4.7) and r = gamma0 E / t. On
+# a simply supported rectangle int D2w:D2v = int Dw Dv for w, v vanishing
+# on the edges, so the form is (D - theta c) int Dw Dv with c = lambda^2
+# (t/2)^2 / r: the discrete solutions of theta = 1, -1 are that of theta = 0
+# scaled by D / (D - theta c), exactly (same space, same quadrature).
+lam = E_UNIT_D * 0.3 / (1.3 * 0.4)
+c_theta = lam ** 2 * 0.005 ** 2 / (20 * E_UNIT_D / 0.01)
+ss = dict(sub=(8, 8), edges="simply supported, simply supported, simply supported, "
+          "simply supported", formulation="nitsche",
+          extra="subsection Contact\n  set Nitsche gamma0 = 20\nend\n")
+w_ss = {}
+for theta in (0, 1, -1):
+    s, _ = run(args, "kn_far%d" % theta, plate_prm(theta=theta, **ss))
+    check(s["cycles"][-1]["converged"] and s["cycles"][-1]["active_points"] == 0,
+          "Kirchhoff-Nitsche far obstacle theta=%d: converged, no contact" % theta)
+    w_ss[theta] = s["cycles"][-1]["probes"][0]
+close(w_ss[0], 0.0040623527, 1e-3, "Kirchhoff-Nitsche far obstacle theta=0: w(centre) = "
+      "0.0040623527 q a^4/D (hard simply supported)")
+for theta in (1, -1):
+    close(w_ss[theta] / w_ss[0], 1 / (1 - theta * c_theta), 1e-8,
+          "Kirchhoff-Nitsche far obstacle theta=%d: w / w(theta=0) = D/(D - theta c), "
+          "c/D = %.5f" % (theta, c_theta))
 
 # A plate resting on the obstacle from the start (paper's plate, obstacle at
 # the bottom face, Level = -t/2): the solution is w = 0 and the obstacle

@@ -10,8 +10,8 @@ Differences expected between the Mindlin/Nitsche solution and this:
   - shear deformation, O((t/l)^2) = 1e-5;
   - the Nitsche penalty: penetration q/r = 5e-11 (r = gamma0 E / t = 4e8)
     and the Poisson-stress shift |sigma_n|/r = O(eps^2 |k|/gamma0) < 1e-8;
-  so deflections and the reaction are checked to 1e-3 and the flat zone to
-  1e-8. The contact area (points with Lambda_n < 0) converges slowly: the
+  so deflections are checked to 1e-3, the reaction to 2e-4 (measured:
+  2e-5 to 6e-5) and the flat zone to 1e-8. The contact area (points with Lambda_n < 0) converges slowly: the
   plate approaches the obstacle with a cubic tangency, w + g0 ~ (q l/(18 D))
   (l - x)^3 (w'' = 0 at l), so an O(h^2) error in w moves the discrete free
   boundary by O(h^(2/3)) ~ 0.1-0.3; it is checked to lie in [L - 2l - 0.8,
@@ -82,7 +82,7 @@ for theta, D, n, rule in ((0, D0, 4, "gauss"), (1, D1, 4, "gauss"),
         close(c["probes"][k], w(x), 1e-3, "%s: w(%g)" % (name, x))
     check(abs(c["probes"][3] + g0) < 1e-8,
           "%s: flat zone w(5) = %.12g = -g0 to 1e-8" % (name, c["probes"][3]))
-    close(c["contact_force"] / H, q * (L - 4 * l / 3), 1e-3,
+    close(c["contact_force"] / H, q * (L - 4 * l / 3), 2e-4,
           "%s: total reaction q (L - 4l/3)" % name)
     area = c["contact_area"] / H
     check(L - 2 * l - 0.8 <= area <= L - 2 * l + 0.05,

@@ -129,6 +129,11 @@ namespace NitscheContact
     {
       return constraints;
     }
+    const dealii::DoFHandler<2> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
 
     /// Component indices in the FESystem.
     static constexpr unsigned int w_component    = 0;
