@@ -45,6 +45,17 @@ def run(args, name, prm_text, np=1, expect_status=0):
     return summary, proc.stdout
 
 
+def first_corrections(log):
+    """|dU|_a/|U|_a of the first Newton iteration of every cycle in a log
+    with 'Print iterations = true' (a start from U = 0 gives 1: the first
+    iterate is the correction itself)."""
+    firsts = []
+    for block in re.split(r"(?m)^Cycle \d+:", log)[1:]:
+        m = re.search(r"iteration +1: .*?\|dU\|_a/\|U\|_a ([0-9.e+-]+)", block)
+        firsts.append(float(m.group(1)) if m else float("nan"))
+    return firsts
+
+
 def shipped_prm(name, replacements, extra=""):
     """The text of parameters/<name> (or of the file at the absolute path
     name) with 'set <entry> = value' replaced for each (entry, value) of

@@ -14,7 +14,7 @@ Independent sources (doc/theory.md section 6.2):
   depends on D only), so w_c = 0.00406235 D/(D - c) + shear part.
 The obstacle is placed far below (no contact); theta = 0 except in the last
 check. E = 12 (1 - nu^2) / t^3 gives D = 1, a = 1, q = 1."""
-from common import parse_args, run, check, close, finish
+from common import parse_args, run, check, close, finish, first_corrections
 
 args = parse_args()
 nu = 0.3
@@ -109,7 +109,7 @@ E = 12 * (1 - nu * nu) / t ** 3
 mu = E / (2 * (1 + nu))
 A = 1 / (4 * math.pi ** 4) + 1 / (2 * math.pi ** 2 * (5 / 6) * mu * t)
 B = 1 / (4 * math.pi ** 3)
-s, _ = run(args, "mindlin_exact", """
+s, log = run(args, "mindlin_exact", """
 set Model = mindlin
 subsection Geometry
   set Length x = 1
@@ -139,6 +139,16 @@ subsection Output
   set Probe points = 0.5, 0.5
 end
 """ % (t, E, A, B))
+# nested iteration (no contact here: a linear problem): each cycle starts
+# from the previous cycle's solution carried onto the refined mesh, so its
+# first correction is the change of the discrete solution between the two
+# meshes, which halves from cycle to cycle like the energy-norm error (rate
+# 1). From U = 0 it would be 1 on every cycle.
+firsts = first_corrections(log)
+check(len(firsts) == 4 and all(0.4 < firsts[k + 1] / firsts[k] < 0.6 for k in range(1, 3))
+      and firsts[1] < 0.9,
+      "exact solution: first corrections of the nested cycles %s halve per cycle"
+      % ", ".join("%.3e" % f for f in firsts[1:]))
 c = s["cycles"][-1]
 for name, rate in (("L2(w)", 2), ("H1(w)", 1), ("L2(phi)", 2), ("H1(phi)", 1)):
     got = c["rates"][name]
