@@ -245,10 +245,10 @@ main(int argc, char *argv[])
     }
   // The failures below may hit one MPI rank only, while the others wait in
   // a collective operation: abort the whole job then instead of hanging.
-  catch (const std::bad_alloc &)
+  catch (const std::bad_alloc &e)
     {
       std::cerr
-        << "nitsche-contact: error: out of memory (std::bad_alloc"
+        << "nitsche-contact: error: out of memory (" << e.what()
         << (n_ranks > 1 ? " on rank " + std::to_string(rank) : std::string())
         << "): the mesh and its linear solver need more memory than is "
            "available. Each cycle multiplies the number of DoFs by about 4 "

@@ -7,6 +7,7 @@
 
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
+#include <Amesos_Mumps.h>
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_Import.h>
 #include <Epetra_Map.h>
@@ -24,6 +25,23 @@
 
 namespace NitscheContact
 {
+  namespace
+  {
+    /// MUMPS INFOG(1) = -7 (an integer work space allocation of the
+    /// analysis failed), -13 (an allocation of the factorisation or the
+    /// solve failed; INFOG(2) its size, in millions when negative) or -19
+    /// (the work space limit ICNTL(23) is too small)
+    void
+    throw_if_mumps_out_of_memory(const int infog1, const int infog2)
+    {
+      if (infog1 == -7 || infog1 == -13 || infog1 == -19)
+        throw OutOfMemory(
+          "the sparse direct solver MUMPS could not allocate its work space "
+          "(INFOG(1) = " + std::to_string(infog1) + ", INFOG(2) = " +
+          std::to_string(infog2) + ")");
+    }
+  } // namespace
+
   using namespace dealii;
 
   // MUMPS with SYM = 2 on the upper triangle of a distributed symmetric
@@ -84,6 +102,14 @@ namespace NitscheContact
       return "MUMPS (L D L^T) error INFOG(1) = " +
              std::to_string(id.infog[0]) +
              ", INFOG(2) = " + std::to_string(id.infog[1]);
+    }
+
+    /// After a failed phase: MUMPS could not allocate its work space (the
+    /// same on every rank)
+    void
+    throw_if_out_of_memory() const
+    {
+      throw_if_mumps_out_of_memory(id.infog[0], id.infog[1]);
     }
 
     /// Gather the upper triangle of the owned rows of A; true if the
@@ -172,7 +198,11 @@ namespace NitscheContact
           id.irn_loc   = rows.data();
           id.jcn_loc   = cols.data();
           id.a_loc     = values.data();
-          AssertThrow(run(1), ExcMessage(error() + " in the analysis"));
+          if (!run(1))
+            {
+              throw_if_out_of_memory();
+              AssertThrow(false, ExcMessage(error() + " in the analysis"));
+            }
           analysed = true;
 
           const bool host = A.Comm().MyPID() == 0;
@@ -197,6 +227,7 @@ namespace NitscheContact
         {
           if (run(2))
             break;
+          throw_if_out_of_memory();
           const bool space = id.infog[0] == -8 || id.infog[0] == -9;
           if (space && attempt < 4)
             id.icntl[13] *= 2;
@@ -234,9 +265,13 @@ namespace NitscheContact
       id.nrhs = 1;
       id.lrhs = static_cast<MUMPS_INT>(n);
       id.rhs  = root_vector->Values(); // read on the host only
-      AssertThrow(run(3),
-                  ExcMessage(error() + " in the forward/backward "
-                                       "substitution"));
+      if (!run(3))
+        {
+          throw_if_out_of_memory();
+          AssertThrow(false,
+                      ExcMessage(error() + " in the forward/backward "
+                                           "substitution"));
+        }
       AssertThrow(x.Export(*root_vector, *to_root, Insert) == 0,
                   ExcInternalError());
     }
@@ -364,6 +399,13 @@ namespace NitscheContact
     if (direct->SymbolicFactorization() != 0 ||
         direct->NumericFactorization() != 0)
       {
+        if (auto *mumps = dynamic_cast<Amesos_Mumps *>(direct.get()))
+          {
+            const int *infog = mumps->GetINFOG();
+            const int  code = infog[0], size = infog[1];
+            release();
+            throw_if_mumps_out_of_memory(code, size);
+          }
         release();
         throw ConvergenceFailure(
           "the sparse direct solver " + settings.solver +

@@ -16,8 +16,10 @@
 
 #include <array>
 #include <memory>
+#include <new>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace NitscheContact
@@ -65,6 +67,24 @@ namespace NitscheContact
   {
   public:
     using std::runtime_error::runtime_error;
+  };
+
+  /// A solver that could not allocate its memory (MUMPS INFOG(1) = -7,
+  /// -13, -19): main() reports it as out of memory, like std::bad_alloc.
+  class OutOfMemory : public std::bad_alloc
+  {
+  public:
+    explicit OutOfMemory(std::string what)
+      : message(std::move(what))
+    {}
+    const char *
+    what() const noexcept override
+    {
+      return message.c_str();
+    }
+
+  private:
+    std::string message;
   };
 
   /// Boundary condition on one lateral edge of the plate (one lateral face of

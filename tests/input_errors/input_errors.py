@@ -319,10 +319,16 @@ with open(oom, "w") as f:
     f.write("set Model = kirchhoff\nsubsection Geometry\n  set Subdivisions = 3000, 3000\n"
             "end\nsubsection Output\n  set Directory = %s/out\n  set Format = none\nend\n"
             % oom_out)
-r = subprocess.run([args.exe, oom], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                   text=True, cwd=args.workdir,
-                   preexec_fn=lambda: resource.setrlimit(resource.RLIMIT_AS,
-                                                         (10**9, 10**9)))
+# (The mesh itself exceeds the limit, so the run fails while creating it,
+# within a second. A limit reached inside OpenBLAS instead would make
+# OpenBLAS wait for memory for ever, hence the timeout.)
+try:
+    r = subprocess.run([args.exe, oom], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                       text=True, cwd=args.workdir, timeout=120,
+                       preexec_fn=lambda: resource.setrlimit(resource.RLIMIT_AS,
+                                                             (10**9, 10**9)))
+except subprocess.TimeoutExpired:
+    r = subprocess.CompletedProcess([], -1, "", "timed out after 120 s")
 check(r.returncode == 3 and "out of memory" in r.stderr and "Geometry/Subdivisions" in r.stderr
       and not os.path.exists(oom_out),
       "out of memory on cycle 0: exit %d (3), message, nothing left: %s"
