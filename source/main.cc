@@ -42,6 +42,24 @@ namespace
     return path;
   }
 
+  // The out-of-memory message; `summary` names an existing summary.json.
+  std::string
+  out_of_memory_message(const std::string &what, const std::string &where,
+                        const std::string &summary)
+  {
+    std::error_code ignored;
+    return "nitsche-contact: error: out of memory (" + what + where +
+           "): the mesh and its linear solver need more memory than is "
+           "available. Each cycle multiplies the number of DoFs by about 4 "
+           "(8 when refining through the thickness): lower 'Geometry/"
+           "Subdivisions', 'Initial refinement' or 'Number of cycles', use "
+           "'Linear solver = multigrid' for the frictionless plates, or run "
+           "the 3D model on more MPI processes." +
+           (!summary.empty() && std::filesystem::exists(summary, ignored) ?
+              " The cycles that finished are in " + summary + "." :
+              std::string());
+  }
+
   // After a failure on some MPI ranks only (out of memory, an internal
   // error), the other ranks may wait in a collective operation for ever:
   // end the whole job.
@@ -139,6 +157,8 @@ main(int argc, char *argv[])
       return 1;
     }
 
+  // summary.json of the run, once the output directory is known
+  std::string summary;
   try
     {
       if (!std::filesystem::is_regular_file(file))
@@ -201,6 +221,7 @@ main(int argc, char *argv[])
         if (status_error)
           created.clear();
       }
+      summary = common.output_directory + "/summary.json";
       ContactDriver driver(common, MPI_COMM_WORLD);
       // invalid input found on the mesh, or out of memory: remove what
       // this run created unless a cycle finished (summary.json)
@@ -220,9 +241,40 @@ main(int argc, char *argv[])
           remove_created();
           throw;
         }
-      catch (const std::bad_alloc &)
+      catch (const OutOfMemory &)
+        {
+          // (collective: MUMPS reports it on every rank)
+          remove_created();
+          throw;
+        }
+      catch (const ConvergenceFailure &)
+        {
+          throw;
+        }
+      // The failures below may hit one MPI rank only while the others wait
+      // in a collective operation, and the model's destructor (MUMPS) would
+      // wait for them too: end the whole job from here.
+      catch (const std::bad_alloc &e)
         {
           remove_created();
+          if (n_ranks > 1)
+            {
+              std::cerr << out_of_memory_message(
+                             e.what(), " on rank " + std::to_string(rank),
+                             summary)
+                        << std::endl;
+              MPI_Abort(MPI_COMM_WORLD, 3);
+            }
+          throw;
+        }
+      catch (const std::exception &e)
+        {
+          if (n_ranks > 1)
+            {
+              std::cerr << "nitsche-contact: internal error on rank " << rank
+                        << ": " << e.what() << std::endl;
+              MPI_Abort(MPI_COMM_WORLD, 3);
+            }
           throw;
         }
       if (root)
@@ -243,21 +295,23 @@ main(int argc, char *argv[])
         std::cerr << "nitsche-contact: error: " << e.what() << std::endl;
       return 2;
     }
-  // The failures below may hit one MPI rank only, while the others wait in
-  // a collective operation: abort the whole job then instead of hanging.
+  catch (const OutOfMemory &e)
+    {
+      // collective (every rank has it)
+      if (root)
+        std::cerr << out_of_memory_message(e.what(), "", summary) << std::endl;
+      return 3;
+    }
+  // The failures below may hit one MPI rank only (before the driver runs),
+  // while the others wait in a collective operation: end the whole job.
   catch (const std::bad_alloc &e)
     {
-      std::cerr
-        << "nitsche-contact: error: out of memory (" << e.what()
-        << (n_ranks > 1 ? " on rank " + std::to_string(rank) : std::string())
-        << "): the mesh and its linear solver need more memory than is "
-           "available. Each cycle multiplies the number of DoFs by about 4 "
-           "(8 when refining through the thickness): lower 'Geometry/"
-           "Subdivisions', 'Initial refinement' or 'Number of cycles', use "
-           "'Linear solver = multigrid' for the plates, or run the 3D model "
-           "on more MPI processes. Cycles that finished are in the output "
-           "directory's summary.json."
-        << std::endl;
+      std::cerr << out_of_memory_message(
+                     e.what(),
+                     n_ranks > 1 ? " on rank " + std::to_string(rank) :
+                                   std::string(),
+                     summary)
+                << std::endl;
       abort_other_ranks(n_ranks, 3);
       return 3;
     }

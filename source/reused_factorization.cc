@@ -227,7 +227,6 @@ namespace NitscheContact
         {
           if (run(2))
             break;
-          throw_if_out_of_memory();
           const bool space = id.infog[0] == -8 || id.infog[0] == -9;
           if (space && attempt < 4)
             id.icntl[13] *= 2;
@@ -239,7 +238,8 @@ namespace NitscheContact
               factorize(A);
               return;
             }
-          else if (id.infog[0] == -10)
+          throw_if_out_of_memory(); // (with a fresh analysis)
+          if (id.infog[0] == -10)
             // numerically singular
             throw ConvergenceFailure(
               error() + ": the Newton matrix is singular; most often a rigid "
@@ -401,10 +401,13 @@ namespace NitscheContact
       {
         if (auto *mumps = dynamic_cast<Amesos_Mumps *>(direct.get()))
           {
+            // INFOG is defined on the host (rank 0) only: Amesos may run
+            // MUMPS on fewer ranks than the communicator has
             const int *infog = mumps->GetINFOG();
-            const int  code = infog[0], size = infog[1];
+            int        code_size[2] = {infog[0], infog[1]};
+            A.trilinos_matrix().Comm().Broadcast(code_size, 2, 0);
             release();
-            throw_if_mumps_out_of_memory(code, size);
+            throw_if_mumps_out_of_memory(code_size[0], code_size[1]);
           }
         release();
         throw ConvergenceFailure(

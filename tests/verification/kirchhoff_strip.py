@@ -31,10 +31,12 @@ s, log = run(args, "strip",
                        extra="subsection Nonlinear solver\n  set Print iterations = true\nend\n"))
 # nested iteration: the cycles after the first start from the previous
 # solution (exact in the finer Hermite space), so their first correction is
-# small (from U = 0 it would be 1)
+# the change of the discrete solution between meshes, which decreases with
+# refinement (from U = 0 it would be 1 on every cycle)
 firsts = first_corrections(log)
-check(len(firsts) == 3 and all(f < 0.05 for f in firsts[1:]),
-      "first corrections of the nested cycles %s < 0.05" % ", ".join("%.1e" % f for f in firsts[1:]))
+check(len(firsts) == 3 and firsts[1] < 0.2 and firsts[2] < firsts[1],
+      "first corrections of the nested cycles %s: below 0.2 and decreasing"
+      % ", ".join("%.1e" % f for f in firsts[1:]))
 reaction = q * (L - 4 * ell / 3) * H
 err_force, err_ell, err_w, pen = [], [], [], []
 for c in s["cycles"]:
