@@ -101,9 +101,9 @@ main(int argc, char *argv[])
   // processes: one thread each). DEAL_II_NUM_THREADS caps it.
   dealii::Utilities::MPI::MPI_InitFinalize mpi(
     argc, argv, dealii::numbers::invalid_unsigned_int);
-  const bool root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   const unsigned int rank =
     dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+  const bool root = rank == 0;
   const unsigned int n_ranks =
     dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
 
@@ -228,8 +228,7 @@ main(int argc, char *argv[])
       const auto remove_created = [&]() {
         std::error_code ignored;
         if (root && !created.empty() &&
-            !std::filesystem::exists(common.output_directory + "/summary.json",
-                                     ignored))
+            !std::filesystem::exists(summary, ignored))
           std::filesystem::remove_all(created, ignored);
       };
       try
