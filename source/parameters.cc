@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -495,7 +496,7 @@ namespace NitscheContact
         "(contact status, slip direction and friction threshold frozen "
         "at the previous iterate). Identical for frictionless problems.");
       prm.declare_entry(
-        "Tolerance", "1e-8", Patterns::Double(),
+        "Tolerance", "1e-6", Patterns::Double(),
         "Stop when the energy norm (bulk elastic energy) of the Newton "
         "correction at the current iterate is below Tolerance times the "
         "energy norm of the solution; > 0. Thin 3D plates have a "
@@ -503,7 +504,7 @@ namespace NitscheContact
         "1e-6 there. Without friction, a run whose contact status has "
         "settled while the correction stops decreasing (Tolerance below "
         "the round-off floor) stops early and says so.");
-      prm.declare_entry("Maximum iterations", "50",
+      prm.declare_entry("Maximum iterations", "300",
                         Patterns::Integer(1, 100000),
                         "Iteration limit per cycle (per stage when a cycle "
                         "is solved in stages: 'Load steps', 'Friction "
@@ -644,7 +645,10 @@ namespace NitscheContact
         "point of the cycle's last (converged) iterate with x, y, the centre of its cell "
         "(3D: face), weight, status (0 inactive, 1 stick, 2 slip), s_n = "
         "sigma_n - r (u_n - g), sigma_n, gap g - u_n and pressure "
-        "-Lambda_n. Points on shared vertices and edges appear once per "
+        "-Lambda_n; with friction also the slip s_t, q = sigma_t - r s_t, "
+        "the Coulomb threshold tau and Lambda_t (columns slip_*, q_*, tau, "
+        "lambda_t_*; zero without "
+        "friction). Points on shared vertices and edges appear once per "
         "cell; the pressures times the weights sum to the contact force. "
         "One line per point: large for fine meshes (the 1M-DoF Kirchhoff "
         "run has 9.4 million points).");
@@ -677,8 +681,8 @@ namespace NitscheContact
       prm.declare_entry(
         "Exact solution", "", Patterns::Anything(),
         "Optional exact solution, components separated by ';' (3D: "
-        "u1; u2; u3 in x,y,z; Kirchhoff: w in x,y; Mindlin: as documented "
-        "in its section). When set, errors and rates are reported.");
+        "u1; u2; u3 in x,y,z; Kirchhoff: w in x,y; Mindlin: w; phi_x; "
+        "phi_y in x,y). When set, errors and rates are reported.");
       prm.declare_entry("Function constants", "", Patterns::Anything(),
                         "Constants for the exact solution, e.g. 'p=1'.");
     }
@@ -797,15 +801,18 @@ namespace NitscheContact
 
     prm.enter_subsection("Contact");
     {
+      // any spelling of the numbers 1, 0, -1 ("1.0", "-1e0"), nothing else
       const std::string t = Utilities::trim(prm.get("Nitsche theta"));
-      if (t == "1" || t == "+1")
-        theta = 1.;
-      else if (t == "0")
-        theta = 0.;
-      else if (t == "-1")
-        theta = -1.;
-      else
-        bad_value("Contact/Nitsche theta", t, "allowed are 1, 0, -1");
+      {
+        char        *end = nullptr;
+        const double v   = std::strtod(t.c_str(), &end);
+        const bool   number =
+          !t.empty() && end != nullptr && *end == '\0' && std::isfinite(v);
+        if (number && (v == 1. || v == 0. || v == -1.))
+          theta = v == 0. ? 0. : v; // (no -0)
+        else
+          bad_value("Contact/Nitsche theta", t, "allowed are 1, 0, -1");
+      }
       gamma0 = prm.get_double("Nitsche gamma0");
       if (!(gamma0 > 0.))
         bad_value("Contact/Nitsche gamma0", number_to_string(gamma0), "must be > 0");

@@ -248,6 +248,17 @@ namespace NitscheContact
       return std::numeric_limits<double>::quiet_NaN();
     }
 
+    /// The work F.U of the load (without contact terms, at the current
+    /// load factor) on the current iterate U; NaN if the model does not
+    /// offer it. The driver compares it with |U|_a^2 to recognise a
+    /// solution that is a rigid motion (a free plate resting on the
+    /// obstacle), for which the energy seminorm cannot judge a correction.
+    virtual double
+    load_work() const
+    {
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+
     /// Energy norms (bulk elastic energy, no contact terms) of the last
     /// increment dU and of the current iterate U.
     virtual double

@@ -191,8 +191,14 @@ namespace NitscheContact
             out[q](0) = -st.lambda_n;
             out[q](1) = st.lambda_t.norm();
             out[q](2) = static_cast<double>(st.status);
-            out[q](3) = std::min(pi.gap, 1e30);
-            out[q](4) = pi.u_n - pi.gap;
+            // no obstacle below the point (a sphere's shadow ends): NaN,
+            // which ParaView leaves out of colour ranges
+            out[q](3) = std::isfinite(pi.gap) ?
+                          pi.gap :
+                          std::numeric_limits<double>::quiet_NaN();
+            out[q](4) = std::isfinite(pi.gap) ?
+                          pi.u_n - pi.gap :
+                          std::numeric_limits<double>::quiet_NaN();
           }
       }
 
@@ -278,7 +284,8 @@ namespace NitscheContact
       first_face() override
       {
         FaceDescriptor f = DataOutFaces<3>::first_face();
-        while (f.first != this->triangulation->end() && !is_contact(f))
+        // (a rank without cells gets an invalid iterator, not end())
+        while (f.first.state() == IteratorState::valid && !is_contact(f))
           f = DataOutFaces<3>::next_face(f);
         return f;
       }
@@ -287,7 +294,7 @@ namespace NitscheContact
       next_face(const FaceDescriptor &face) override
       {
         FaceDescriptor f = DataOutFaces<3>::next_face(face);
-        while (f.first != this->triangulation->end() && !is_contact(f))
+        while (f.first.state() == IteratorState::valid && !is_contact(f))
           f = DataOutFaces<3>::next_face(f);
         return f;
       }

@@ -99,8 +99,11 @@ close(cf["probes"][1], cp["probes"][1], 1e-2, "F=0.2: w(2) close to frictionless
 # slip reversal = false') its full steps wander on the 16^2 cycle without
 # ever repeating a contact status (400 iterations, session 13), so the
 # file sets 'Damping after no decrease = 20' (damped steps once |R| has had
-# no new minimum in 20 steps); with the rule off that run must fail. (With
-# the stick step, the default since session 15, it converges either way.)
+# no new minimum in 20 steps). With both rules off the run must fail or
+# need at least 3x the iterations of the shipped file on the 16^2 cycle:
+# the wandering path is steered by round-off, and with the packages of
+# session 17 it reached a solution after 363 iterations (71 with the
+# rules), where it had not in 400 before.
 import os, re
 paper = open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
                           "parameters", "paper_mindlin_friction.prm")).read()
@@ -128,7 +131,15 @@ for cycle, (c, r) in enumerate(zip(pf["cycles"], ref["cycles"])):
 off, n = re.subn(r"(?m)^(\s*set Damping after no decrease\s*=).*$", r"\1 0", paper)
 check(n == 1, "paper_mindlin_friction.prm: one 'Damping after no decrease'")
 off += "\nsubsection Nonlinear solver\n  set Stick step on slip reversal = false\nend\n"
-_, out = run(args, "paper_friction_rule_off", off, expect_status=2)
-check("did not converge" in out,
-      "paper, F=0.2, rule off, plain Newton steps: no convergence (as before session 13)")
+so, out = run(args, "paper_friction_rule_off", off, expect_status=[0, 2])
+if so is not None and len(so["cycles"]) >= 2 and so["cycles"][1]["converged"]:
+    n_off = so["cycles"][1]["nonlinear_iterations"]
+    n_on = pf["cycles"][1]["nonlinear_iterations"]
+    check(n_off >= 3 * n_on,
+          "paper, F=0.2, rules off, plain Newton steps: the 16^2 cycle needs %d "
+          "iterations >= 3 x %d with the rules" % (n_off, n_on))
+else:
+    check("did not converge" in out,
+          "paper, F=0.2, rules off, plain Newton steps: no convergence in 400 "
+          "iterations on 16^2")
 finish()

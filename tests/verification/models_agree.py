@@ -49,8 +49,12 @@ independent values instead of a symmetric tolerance:
    by at least 2.5x (EOC > 1.3; measured 4.6x and 3.9x).
 So a 3D reaction off by +2.2 % or -1.3 % fails the test. The centre must
 lie on the obstacle (w(5,5) = -0.995 within 1e-5 for every model) and the
-penetration is bounded (plates 1e-5; 3D 2e-4: with 3x3 contact points per
-face the nodes between them penetrate by 1e-4, doc/results.md).
+penetration is bounded (Mindlin 1e-5; 3D 2e-4: with 3x3 contact points per
+face the nodes between them penetrate by 1e-4, doc/results.md; GSV 1e-3:
+the stabilised method lets the cubic dip inside the cells, 3.6e-4 below
+the obstacle on 16^2 at its contact points (max_penetration), 3.3e-5 on
+32^2, 4.9e-6 on 64^2, while its vertices stay on it; min_deflection
+samples the cell interiors since session 17).
 The contact area is not compared: it is a different quantity in GSV and
 in the inserted-kinematics formulations (doc/results.md).
 The 3D runs refine in plane (8x8x1 -> 16x16x1, nested iteration, as
@@ -162,9 +166,11 @@ for what, f, tol in QUANTITIES:
               "3D %s: difference to GSV shrinks from %+.2f %% (8x8x1) to %+.2f %% "
               "(16x16x1), factor %.1f >= 2.5" % (what, 100 * d8, 100 * d16, d8 / d16))
 
-for name, c, pen in (("3D", e16, 2e-4), ("Mindlin", mindlin, 1e-5), ("GSV", gsv, 1e-5)):
+for name, c, pen in (("3D", e16, 2e-4), ("Mindlin", mindlin, 1e-5), ("GSV", gsv, 1e-3)):
     check(abs(c["probes"][0] - OBSTACLE_W) <= 1e-5,
           "%s: centre on the obstacle level, w(5,5) = %.8f" % (name, c["probes"][0]))
     check(c["min_deflection"] >= OBSTACLE_W - pen,
           "%s: penetration %.2e <= %.0e" % (name, OBSTACLE_W - c["min_deflection"], pen))
+check(gsv["extra"]["max_penetration"] <= 1e-3,
+      "GSV: penetration at the contact points %.2e <= 1e-3" % gsv["extra"]["max_penetration"])
 finish()

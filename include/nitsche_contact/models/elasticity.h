@@ -63,6 +63,11 @@ namespace NitscheContact
     energy() const override;
     double
     energy_slope() const override;
+    double
+    load_work() const override
+    {
+      return load_factor * (load * solution);
+    }
     bool
     prepare_line_search() override;
     double

@@ -79,6 +79,11 @@ namespace NitscheContact
       return std::abs(load_factor) * unit_load_norm;
     }
     double
+    load_work() const override
+    {
+      return load_factor * (unit_load * solution);
+    }
+    double
     energy_slope() const override;
     bool
     prepare_line_search() override;
@@ -286,6 +291,7 @@ namespace NitscheContact
     assemble_matrix(const std::vector<unsigned char> &status);
     dealii::Vector<double>                 rhs; ///< -R(U), condensed
     double unit_load_norm = 0.; ///< |F| at load factor 1 (setup_dofs)
+    dealii::Vector<double> unit_load; ///< F at load factor 1 (setup_dofs)
     std::vector<unsigned char>             previous_status;
     /// work arrays of assemble(): per cell the 16 entries of -R and the
     /// contact energy, per point the status just computed

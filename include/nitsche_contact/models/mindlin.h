@@ -93,6 +93,11 @@ namespace NitscheContact
     double
     energy_slope() const override;
     double
+    load_work() const override
+    {
+      return load_factor * (load * solution);
+    }
+    double
     increment_energy_norm() const override;
     double
     solution_energy_norm() const override;

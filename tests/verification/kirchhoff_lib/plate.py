@@ -39,6 +39,7 @@ subsection Kirchhoff
 end
 subsection Nonlinear solver
   set Scheme = {scheme}
+  set Tolerance = 1e-8
   set Maximum iterations = 200
   set Print iterations = false
 end

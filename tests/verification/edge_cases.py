@@ -1,0 +1,153 @@
+"""Legal but unusual input that a review found mishandled (session 17), each
+checked against an independent source:
+
+1. A free plate lifted by a flat obstacle above it (Level 0.5) rests on it:
+   its solution is a rigid translation up to the load's compression, which
+   the energy seminorm of the stopping test cannot measure. Closed form:
+   the plate's lower face lies on the obstacle, so the centre deflection is
+   0.5 + t/2 (plates: bottom-face convention; 3D: the mid-plane's u3 within
+   the compression t q / E), and the reaction equals the total load q a^2
+   (equilibrium). All three models, each must converge (exit 0).
+2. The 3D model on more MPI ranks than cells (1 cell, 2 ranks) with VTU
+   output: one rank has no cells; the run must exit 0, write every piece
+   of the contact output, and give the 1-rank summary (second method).
+3. The file printed by --print-parameters, with only the output directory
+   changed, must run (exit 0, converged) and satisfy equilibrium bounds
+   (0 < reaction < total load q a^2, the plate clamped at its edges).
+4. A cycle that does not converge (iteration limit 2) exits 2 and leaves
+   summary.json with that cycle marked converged = false and no results
+   (null, not zeros).
+5. 'Nitsche theta = -1.0' is the run of '-1' (the same program).
+6. Kirchhoff min/max deflection on a single simply supported cell: the
+   vertices are held at 0, the interior is not; min_deflection must be
+   below 0 and not above the probe value at the centre (second evaluation
+   of the same field).
+"""
+import json
+import os
+import shutil
+import subprocess
+from common import parse_args, run, check, close, finish
+
+args = parse_args()
+q, a, t = 0.02, 10.0, 0.01
+total = q * a * a
+
+# 1. free plates lifted by the obstacle
+LIFT = """
+set Model = %s
+subsection Geometry
+  set Subdivisions = %s
+  set Edge conditions = free, free, free, free
+  set Number of cycles = 1
+end
+subsection Obstacle
+  set Level = 0.5
+end
+subsection Nonlinear solver
+  set Maximum iterations = 100
+end
+"""
+for model, sub in [("kirchhoff", "8, 8"), ("mindlin", "8, 8"), ("elasticity", "4, 4, 1")]:
+    s, log = run(args, "lift_" + model, LIFT % (model, sub))
+    c = s["cycles"][-1] if s else None
+    check(c is not None and c["converged"], model + ": lifted free plate converged")
+    if not c:
+        continue
+    close(c["contact_force"], total, 1e-6, model + ": reaction = total load q a^2")
+    # the lower face moves from -t/2 to 0.5; the 3D mid-plane displacement
+    # differs by the compression of half the plate, below t q / E = 1e-9
+    close(c["probes"][0], 0.5 + t / 2, 1e-6 if model == "elasticity" else 1e-9,
+          model + ": deflection at the centre = 0.5 + t/2")
+
+# 2. more ranks than cells, VTU output
+ONE_CELL = """
+set Model = elasticity
+subsection Geometry
+  set Subdivisions = 1, 1, 1
+  set Number of cycles = 1
+end
+"""
+one, _ = run(args, "one_cell_np1", ONE_CELL)
+outdir = os.path.join(args.workdir, "one_cell_np2_vtu")
+shutil.rmtree(outdir, ignore_errors=True)
+prm = os.path.join(args.workdir, "one_cell_np2_vtu.prm")
+with open(prm, "w") as f:
+    f.write(ONE_CELL + "subsection Output\n  set Directory = %s\n  set Format = vtu\nend\n" % outdir)
+proc = subprocess.run([args.mpiexec or "mpiexec", "-np", "2", args.exe, prm],
+                      stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                      cwd=args.workdir)
+check(proc.returncode == 0, "1 cell on 2 ranks with VTU output: exit 0 (got %d)" % proc.returncode)
+if proc.returncode != 0:
+    print(proc.stdout[-2000:])
+for piece in ["contact-00.pvtu", "contact-00.0000.vtu", "contact-00.0001.vtu",
+              "solution_00.pvtu", "summary.json"]:
+    check(os.path.exists(os.path.join(outdir, piece)), "1 cell on 2 ranks: %s written" % piece)
+if os.path.exists(os.path.join(outdir, "summary.json")) and one:
+    two = json.load(open(os.path.join(outdir, "summary.json")))
+    a1, a2 = one["cycles"][0], two["cycles"][0]
+    check(a2["converged"], "1 cell on 2 ranks: converged")
+    close(a2["probes"][0], a1["probes"][0], 1e-8, "1 cell: centre deflection, 2 vs 1 ranks")
+
+# 3. the all-defaults parameter file
+defaults = subprocess.run([args.exe, "--print-parameters"], stdout=subprocess.PIPE,
+                          text=True, check=True).stdout
+s, _ = run(args, "defaults", defaults)
+c = s["cycles"][-1] if s else None
+check(c is not None and c["converged"], "--print-parameters file: converged")
+if c:
+    check(0. < c["contact_force"] < total,
+          "--print-parameters file: 0 < reaction %.6g < q a^2 = %g" % (c["contact_force"], total))
+
+# 4. a cycle that does not converge
+FAIL = """
+set Model = kirchhoff
+subsection Geometry
+  set Subdivisions = 16, 16
+  set Number of cycles = 1
+end
+subsection Nonlinear solver
+  set Maximum iterations = 2
+end
+"""
+s, _ = run(args, "not_converged", FAIL, expect_status=2)
+c = s["cycles"][-1] if s else None
+check(c is not None and not c["converged"], "iteration limit 2: cycle marked converged = false")
+if c:
+    for key in ["contact_area", "contact_force", "min_deflection", "max_deflection", "probes"]:
+        check(c[key] is None, "iteration limit 2: %s is null (%r)" % (key, c[key]))
+
+# 5. 'Nitsche theta' accepts any spelling of the
+# numbers 1, 0, -1: "-1.0" must give the run of "-1" (the same program).
+THETA = FAIL.replace("set Maximum iterations = 2", "set Maximum iterations = 100") + \
+    "subsection Contact\n  set Nitsche theta = %s\nend\n"
+s1, _ = run(args, "theta_m1", THETA % "-1")
+s2, _ = run(args, "theta_m1_0", THETA % "-1.0")
+if s1 and s2:
+    check(s1["cycles"][0]["contact_force"] == s2["cycles"][0]["contact_force"],
+          "theta = -1.0 gives the run of theta = -1")
+else:
+    check(False, "theta = -1 and -1.0 both ran")
+
+# 6. Kirchhoff extremes on one simply supported cell, obstacle far below
+SS = """
+set Model = kirchhoff
+subsection Geometry
+  set Subdivisions = 1, 1
+  set Edge conditions = simply supported, simply supported, simply supported, simply supported
+  set Number of cycles = 1
+end
+subsection Obstacle
+  set Level = -100
+end
+"""
+s, _ = run(args, "ss_one_cell", SS)
+c = s["cycles"][-1] if s else None
+if c:
+    w = c["probes"][0]
+    check(w < 0., "one SS cell: centre deflection %.6g < 0" % w)
+    check(c["min_deflection"] <= w + 1e-12 * abs(w),
+          "one SS cell: min_deflection %.6g <= centre %.6g" % (c["min_deflection"], w))
+else:
+    check(False, "one SS cell: summary written")
+finish()
