@@ -259,6 +259,16 @@ namespace NitscheContact
       return std::numeric_limits<double>::quiet_NaN();
     }
 
+    /// |dU| / |U| in the Euclidean norm of the coefficient vectors (the
+    /// last increment and the current iterate), NaN if not offered: the
+    /// driver's measure of a correction when the solution is a rigid motion
+    /// (load_work()), which the energy seminorm does not see.
+    virtual double
+    increment_l2_relative() const
+    {
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+
     /// Energy norms (bulk elastic energy, no contact terms) of the last
     /// increment dU and of the current iterate U.
     virtual double

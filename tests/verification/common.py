@@ -38,7 +38,7 @@ def run(args, name, prm_text, np=1, expect_status=0):
     allowed = expect_status if isinstance(expect_status, (list, tuple)) else [expect_status]
     if proc.returncode not in allowed:
         print(proc.stdout)
-        fail("%s: exit status %d, expected %d" % (name, proc.returncode, expect_status))
+        fail("%s: exit status %d, expected %s" % (name, proc.returncode, expect_status))
     summary = None
     path = os.path.join(outdir, "summary.json")
     if os.path.exists(path):

@@ -20,5 +20,5 @@ for name, edges, ref in cases:
         check(c["converged"] and c["active_points"] == 0,
               "%s theta=%d: converged without contact" % (name, theta))
         close(c["probes"][0], ref, 5e-6, "%s theta=%d centre deflection w D/(q a^4)" % (name, theta))
-        close(c["max_deflection"], ref, 5e-6, "%s theta=%d max nodal deflection" % (name, theta))
+        close(c["max_deflection"], ref, 5e-6, "%s theta=%d max deflection" % (name, theta))
 finish()

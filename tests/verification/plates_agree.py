@@ -54,6 +54,7 @@ subsection Contact
   set Nitsche gamma0 = 200
 end
 subsection Nonlinear solver
+  set Tolerance = 1e-8
   set Maximum iterations = 300
 end
 """)
@@ -67,6 +68,7 @@ subsection Kirchhoff
   set Contact formulation = gsv
 end
 subsection Nonlinear solver
+  set Tolerance = 1e-8
   set Maximum iterations = 100
 end
 """)
@@ -79,8 +81,10 @@ close(m["probes"][3], k["probes"][3], 5e-3, "w(2.5,2.5), Mindlin vs Kirchhoff")
 close(m["probes"][2], k["probes"][2], 1.5e-2, "w(1,5), Mindlin vs Kirchhoff")
 for name, c in (("Mindlin", m), ("Kirchhoff", k)):
     close(c["probes"][0], -0.995, 1e-6, "%s centre on the obstacle level" % name)
-    # the constraint holds at contact quadrature points; nodal values can
-    # dip below by O(h^2 curvature) near the free boundary (measured ~3e-6)
+    # the constraint holds at the contact quadrature points; the deflection
+    # can dip below them near the free boundary (Mindlin: nodal values;
+    # Kirchhoff GSV: sampled inside the cells since session 17, 4.9e-6 on
+    # 64^2)
     check(c["min_deflection"] >= -0.995 - 1e-5,
           "%s: penetration below 1e-5 of the gap (min w = %.8f)" % (name, c["min_deflection"]))
 finish()

@@ -73,6 +73,13 @@ namespace NitscheContact
     double
     line_slope(double t) const override;
     double
+    increment_l2_relative() const override
+    {
+      const double s = solution.l2_norm();
+      return s > 0. ? increment.l2_norm() / s :
+                      std::numeric_limits<double>::quiet_NaN();
+    }
+    double
     increment_energy_norm() const override;
     double
     solution_energy_norm() const override;

@@ -98,6 +98,13 @@ namespace NitscheContact
       return load_factor * (load * solution);
     }
     double
+    increment_l2_relative() const override
+    {
+      const double s = solution.l2_norm();
+      return s > 0. ? increment.l2_norm() / s :
+                      std::numeric_limits<double>::quiet_NaN();
+    }
+    double
     increment_energy_norm() const override;
     double
     solution_energy_norm() const override;
