@@ -118,6 +118,16 @@ namespace NitscheContact
   }
 
   /// Quantities the driver reports for a converged cycle.
+  /// |d| / |u| in the Euclidean norm of the vectors, NaN for u = 0 (the
+  /// models' increment_l2_relative()).
+  template <class VectorType>
+  inline double
+  relative_l2(const VectorType &d, const VectorType &u)
+  {
+    const double s = u.l2_norm();
+    return s > 0. ? d.l2_norm() / s : std::numeric_limits<double>::quiet_NaN();
+  }
+
   struct CycleResults
   {
     double                           contact_area   = 0.;

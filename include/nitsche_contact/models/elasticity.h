@@ -75,9 +75,7 @@ namespace NitscheContact
     double
     increment_l2_relative() const override
     {
-      const double s = solution.l2_norm();
-      return s > 0. ? increment.l2_norm() / s :
-                      std::numeric_limits<double>::quiet_NaN();
+      return relative_l2(increment, solution);
     }
     double
     increment_energy_norm() const override;
