@@ -257,10 +257,14 @@ namespace NitscheContact
         // settled, which the accepted last step is).
         bool rigid = false, exact_step = false;
         {
+          // (work and u are global, so every rank takes the same branch
+          // into the collective norms of increment_l2_relative())
           const double work = model.load_work();
-          const double l2   = model.increment_l2_relative();
-          if (std::isfinite(work) && u * u <= 1e-12 * std::abs(work) &&
-              std::isfinite(l2))
+          const double l2   = (std::isfinite(work) &&
+                             u * u <= 1e-12 * std::abs(work)) ?
+                                model.increment_l2_relative() :
+                                std::numeric_limits<double>::quiet_NaN();
+          if (std::isfinite(l2))
             {
               rigid    = true;
               relative = l2;
