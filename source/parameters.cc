@@ -882,14 +882,22 @@ namespace NitscheContact
                         "';'");
             probes.emplace_back(c[0], c[1]);
           }
-      std::vector<Point<2>> line =
-        Utilities::trim(prm.get("Profile line")) == "centre line" ?
-          std::vector<Point<2>>{Point<2>(0., centre[1]),
-                                Point<2>(length_x, centre[1])} :
-          parse_point_list(prm.get("Profile line"), "Output/Profile line");
+      std::vector<Point<2>> line;
+      if (Utilities::trim(prm.get("Profile line")) == "centre line")
+        line = {Point<2>(0., centre[1]), Point<2>(length_x, centre[1])};
+      else
+        try
+          {
+            line = parse_point_list(prm.get("Profile line"),
+                                    "Output/Profile line");
+          }
+        catch (const InputError &)
+          {
+            // one message for every malformed value ('centre', '1, 2, 3')
+          }
       if (line.size() != 2)
         bad_value("Output/Profile line", prm.get("Profile line"),
-                  "expected two points 'x0, y0; x1, y1'");
+                  "expected 'centre line' or two points 'x0, y0; x1, y1'");
       profile_points = prm.get_integer("Profile points");
       field_points   = prm.get_integer("Field grid points");
       contact_points = prm.get_bool("Contact points");
@@ -940,6 +948,11 @@ namespace NitscheContact
     {
       exact_solution  = Utilities::trim(prm.get("Exact solution"));
       exact_constants = prm.get("Function constants");
+      // The models parse the constants with the exact solution; without
+      // one, check them here, so that a malformed entry is not ignored.
+      if (exact_solution.empty())
+        make_parsed_function<2>("0", exact_constants, 1,
+                                "Reference solution/Exact solution");
     }
     prm.leave_subsection();
 
