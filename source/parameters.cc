@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -280,14 +281,26 @@ namespace NitscheContact
   {
     // the entry that holds the constants: the load has its own, the exact
     // solution and its derivatives share those of 'Reference solution'
+    // (the obstacle height has none)
     const std::string constants_entry =
-      entry.rfind("Load/", 0) == 0 ? "Load/Function constants" :
-                                     "Reference solution/Function constants";
+      entry.rfind("Load/", 0) == 0      ? "Load/Function constants" :
+      entry.rfind("Obstacle/", 0) == 0 ? "" :
+                                          "Reference solution/Function constants";
     const std::string vars = dim == 2 ? "x,y" : "x,y,z";
     std::map<std::string, double> consts;
     consts["pi"] = numbers::PI;
-    for (const auto &c : Utilities::split_string_list(constants, ','))
+    const auto items = Utilities::split_string_list(constants, ',');
+    for (std::size_t i = 0; i < items.size(); ++i)
       {
+        const std::string &c = items[i];
+        // an empty item: a trailing or doubled ',' (split_string_list
+        // drops a final empty item, so look at the text itself)
+        if (c.empty() || (i + 1 == items.size() &&
+                          Utilities::trim(constants).back() == ','))
+          bad_value(constants_entry,
+                    constants,
+                    "expected 'name=value' pairs separated by ',' (an empty "
+                    "pair is not allowed)");
         const auto kv = Utilities::split_string_list(c, '=');
         if (kv.size() != 2)
           bad_value(constants_entry,
@@ -358,9 +371,10 @@ namespace NitscheContact
         bad_value(entry,
                   expression,
                   "the expression could not be parsed" + why +
-                    " (variables are " + vars +
-                    ", plus pi and the constants of '" + constants_entry +
-                    "')");
+                    " (variables are " + vars + ", plus pi" +
+                    (constants_entry.empty() ?
+                       std::string(")") :
+                       " and the constants of '" + constants_entry + "')"));
       }
     return f;
   }
@@ -465,7 +479,8 @@ namespace NitscheContact
         Patterns::Selection("bottom face|mid-plane"),
         "For the plate models: 'bottom face' constrains the lower face "
         "(w >= z_obs + t/2, physically consistent with the 3D model), "
-        "'mid-plane' constrains the mid-plane deflection (w >= z_obs).");
+        "'mid-plane' constrains the mid-plane deflection (w >= z_obs). The 3D "
+        "model always constrains its bottom face.");
     }
     prm.leave_subsection();
 
@@ -499,7 +514,7 @@ namespace NitscheContact
         "Tolerance", "1e-6", Patterns::Double(),
         "Stop when the energy norm (bulk elastic energy) of the Newton "
         "correction at the current iterate is below Tolerance times the "
-        "energy norm of the solution; > 0. Thin 3D plates have a "
+        "energy norm of the solution; in (0, 1). Thin 3D plates have a "
         "round-off floor near 1e-7 (condition number ~ (L/t)^4), hence the "
         "default 1e-6; the plate models reach 1e-8 to 1e-10 (the shipped "
         "parameter files use those). When the solution is a rigid motion "
@@ -709,6 +724,14 @@ namespace NitscheContact
         bad_value("Geometry/Length y", number_to_string(length_y), "must be > 0");
       if (!(thickness > 0.))
         bad_value("Geometry/Thickness", number_to_string(thickness), "must be > 0");
+      // (the Hermite element and the cell checks work relative to the
+      // larger side: a side ratio beyond 1e6 is a degenerate plate)
+      if (!(length_x <= 1e6 * length_y && length_y <= 1e6 * length_x))
+        throw InputError("invalid values 'Geometry/Length x' = " +
+                         number_to_string(length_x) +
+                         " and 'Geometry/Length y' = " +
+                         number_to_string(length_y) +
+                         ": the side ratio Lx/Ly must lie in [1e-6, 1e6]");
       const auto e =
         Utilities::split_string_list(prm.get("Edge conditions"), ',');
       if (e.size() != 4)
@@ -766,6 +789,13 @@ namespace NitscheContact
                                              1, "Load/Transverse load");
       check_finite_on_plate(*f, "Load/Transverse load", load_expression,
                             length_x, length_y, thickness);
+      // its size on an 11 x 11 grid, for the magnitude check below
+      load_scale = 0.;
+      for (unsigned int j = 0; j <= 10; ++j)
+        for (unsigned int i = 0; i <= 10; ++i)
+          load_scale = std::max(load_scale,
+                                std::abs(f->value(
+                                  Point<2>(0.1 * i * length_x, 0.1 * j * length_y))));
     }
     prm.leave_subsection();
 
@@ -827,14 +857,52 @@ namespace NitscheContact
     }
     prm.leave_subsection();
 
+    // Magnitudes: the bending stiffness D, the deflection scale q L^4 / D
+    // and, for the models whose contact term uses it (3D, Mindlin), the
+    // Nitsche parameter r = gamma0 E/t and the contact force scale r w L^2
+    // must be finite, nonzero double numbers (overflow or underflow
+    // otherwise surfaces mid-run as a non-finite residual or a singular
+    // matrix).
+    {
+      const double L    = std::max(length_x, length_y);
+      const double D    = bending_stiffness();
+      const double r    = model == "kirchhoff" ?
+                            1. :
+                            gamma0 * youngs_modulus / thickness;
+      const double w    = load_scale * (L * L) * (L * L) / D;
+      const double tiny = std::numeric_limits<double>::min();
+      const bool sound  = std::isfinite(D) && D > tiny && std::isfinite(r) &&
+                         r > tiny && std::isfinite(w) &&
+                         (load_scale == 0. || w > tiny) &&
+                         std::isfinite(load_scale * L * L) &&
+                         std::isfinite(r * w * L * L);
+      if (!sound)
+        throw InputError(
+          "the magnitudes of 'Material/Young's modulus' = " +
+          number_to_string(youngs_modulus) + ", 'Geometry/Thickness' = " +
+          number_to_string(thickness) + ", 'Geometry/Length x' = " +
+          number_to_string(length_x) + ", 'Geometry/Length y' = " +
+          number_to_string(length_y) + ", 'Contact/Nitsche gamma0' = " +
+          number_to_string(gamma0) + " and 'Load/Transverse load' (up to " +
+          number_to_string(load_scale) +
+          ") overflow or underflow double precision: the bending stiffness "
+          "E t^3/(12(1-nu^2)) = " + number_to_string(D) +
+          ", gamma0 E / t = " + number_to_string(r) +
+          " and the deflection scale q L^4 / D = " + number_to_string(w) +
+          " must be finite and nonzero; allowed: magnitudes of consistent "
+          "units (e.g. SI or N-mm)");
+    }
+
     prm.enter_subsection("Nonlinear solver");
     {
       scheme    = prm.get("Scheme") == "newton" ? NonlinearScheme::newton :
                                                   NonlinearScheme::fixed_point;
       tolerance = prm.get_double("Tolerance");
-      if (!(tolerance > 0.))
+      // (a relative size of the correction: 1 or more would accept any
+      // iterate, the cold start's first included)
+      if (!(tolerance > 0. && tolerance < 1.))
         bad_value("Nonlinear solver/Tolerance", number_to_string(tolerance),
-                  "must be > 0");
+                  "must lie in (0, 1)");
       max_iterations        = prm.get_integer("Maximum iterations");
       line_search           = prm.get_bool("Line search");
       allow_non_convergence = prm.get_bool("Allow non-convergence");
@@ -1042,6 +1110,37 @@ namespace NitscheContact
            "must be a finite number on the whole plate";
   }
 
+  std::string
+  theta_bending_bias_warning(const CommonParameters &prm,
+                             const double            h_n,
+                             const std::string      &model)
+  {
+    const double nu       = prm.poisson_ratio;
+    const double lambda_E = prm.lambda() / prm.youngs_modulus;
+    const double factor   = 3. * (1. - nu * nu) * lambda_E * lambda_E *
+                          (h_n / prm.thickness);
+    const double c_D      = factor / prm.gamma0;
+    if (prm.theta == 0. || c_D <= 0.01)
+      return "";
+    std::ostringstream o;
+    o << std::setprecision(3) << "  warning: with 'Contact/Nitsche theta' = "
+      << prm.theta << " and 'Contact/Nitsche gamma0' = " << prm.gamma0
+      << " the theta-terms of the " << model
+      << " act on the whole plate, also away from contact, and change its "
+         "(tr k)^2 bending stiffness by "
+      << -prm.theta * 100. * c_D
+      << " % (c/D = 3(1-nu^2)(lambda/E)^2 (h_n/t)/gamma0 = " << c_D
+      << ", h_n = " << h_n << "): the result is that of a different plate";
+    if (prm.theta == 1. && c_D >= (1. + nu) / 2.)
+      o << ", and with c/D >= (1+nu)/2 = " << (1. + nu) / 2.
+        << " its bending form need not be coercive (the bound for any "
+           "edges; clamped edges allow c/D < 1, doc/mindlin.md section 1)";
+    o << ". For a change below 1 % use gamma0 >= " << factor / 0.01
+      << ", or theta = 0 (consistent, no energy for the line search; "
+         "doc/mindlin.md section 2).";
+    return o.str();
+  }
+
   double
   ObstacleSurface::height(const Point<2> &p) const
   {
@@ -1052,7 +1151,7 @@ namespace NitscheContact
         const double dx = p[0] - center[0], dy = p[1] - center[1];
         const double r2 = dx * dx + dy * dy;
         if (r2 >= radius * radius)
-          return -1e30;
+          return no_obstacle;
         return center[2] + std::sqrt(radius * radius - r2);
       }
     return function->value(p);

@@ -117,6 +117,8 @@ namespace NitscheContact
 
     // "Load"
     std::string load_expression; // q(x,y): force per unit area, >0 upwards
+    /// largest |load| on an 11 x 11 grid of the plate (magnitude check)
+    double load_scale = 0.;
     std::string load_constants;
 
     // "Obstacle"
@@ -203,10 +205,19 @@ namespace NitscheContact
   };
 
   /// The rigid obstacle as a height field z = z_obs(x, y) below the plate.
-  /// Where a sphere does not reach, the height is -1e30 (no obstacle).
+  /// Where a sphere does not reach, the height is no_obstacle (-1e30; a
+  /// finite value keeps the contact arithmetic free of infinities).
   class ObstacleSurface
   {
   public:
+    static constexpr double no_obstacle = -1e30;
+    /// Whether a gap g = z_face - height comes from an obstacle (false
+    /// where a sphere does not reach, and for NaN).
+    static bool
+    has_obstacle(const double gap)
+    {
+      return gap < 1e29;
+    }
     explicit ObstacleSurface(const CommonParameters &prm);
     /// Obstacle height below the in-plane point p.
     double
@@ -282,6 +293,20 @@ namespace NitscheContact
   /// Name of an edge condition, for logs.
   std::string
   to_string(EdgeCondition c);
+
+  /// The plate models that insert their kinematics into the 3D Nitsche
+  /// term (Mindlin; Kirchhoff with Nitsche) have sigma_n = lambda (t/2)
+  /// times a curvature trace on the bottom face, so their theta-terms
+  /// -(theta/r) sigma_n sigma_n(v) act on the whole plate and change the
+  /// (tr k)^2 part of the bending form by -theta c, c/D = 3 (1 - nu^2)
+  /// (lambda/E)^2 (h_n/t) / gamma0 (r = gamma0 E / h_n; doc/mindlin.md
+  /// section 2). Returns a warning line when |theta| c/D exceeds 1 % (with
+  /// theta = 1 and c >= D (1 + nu)/2 it adds that coercivity is not
+  /// guaranteed), otherwise an empty string.
+  std::string
+  theta_bending_bias_warning(const CommonParameters &prm,
+                             double                  h_n,
+                             const std::string      &model);
 } // namespace NitscheContact
 
 #endif

@@ -188,15 +188,14 @@ namespace NitscheContact
                                                 prm.friction);
             const PointState st =
               evaluate_contact_point(pi, NonlinearScheme::newton);
-            out[q](0) = -st.lambda_n;
-            out[q](1) = st.lambda_t.norm();
-            out[q](2) = static_cast<double>(st.status);
+            out[q](0) = static_cast<double>(st.status);
             // no obstacle below the point (a sphere's shadow ends): NaN,
             // which ParaView leaves out of colour ranges
-            out[q](3) = std::isfinite(pi.gap) ?
+            const bool obstacle_below = ObstacleSurface::has_obstacle(pi.gap);
+            out[q](1) = obstacle_below ?
                           pi.gap :
                           std::numeric_limits<double>::quiet_NaN();
-            out[q](4) = std::isfinite(pi.gap) ?
+            out[q](2) = obstacle_below ?
                           pi.u_n - pi.gap :
                           std::numeric_limits<double>::quiet_NaN();
           }
@@ -205,8 +204,11 @@ namespace NitscheContact
       std::vector<std::string>
       get_names() const override
       {
-        return {"contact_pressure", "tangential_stress", "contact_status",
-                "initial_gap", "penetration"};
+        // (the pressures are face means of the contact points, added as
+        // cell data by write_graphical_output: Lambda_n evaluated at the
+        // output points, between the contact points, is r times the
+        // nodes' penetration and says nothing about the pressure)
+        return {"contact_status", "initial_gap", "penetration"};
       }
 
       UpdateFlags
@@ -1724,12 +1726,59 @@ namespace NitscheContact
                              directory + "/", "solution", cycle, comm, 2));
     }
     {
+      // Face means over the contact quadrature points (the points where the
+      // discrete problem imposes contact; their sum is contact_force):
+      // pressure p = -Lambda_n, |Lambda_t|, and the fraction of the face
+      // area with p > 0. Stored per cell, the cell of each contact face.
+      Vector<double> pressure(triangulation.n_active_cells()),
+        tangential(triangulation.n_active_cells()),
+        fraction(triangulation.n_active_cells());
+      {
+        FEFaceValues<3> fvf(mapping, fe, contact_face_quadrature,
+                            update_values | update_gradients |
+                              update_quadrature_points | update_JxW_values |
+                              update_normal_vectors);
+        const unsigned int          nq = contact_face_quadrature.size();
+        std::vector<Vector<double>> u_values(nq, Vector<double>(3));
+        std::vector<std::vector<Tensor<1, 3>>> u_grads(
+          nq, std::vector<Tensor<1, 3>>(3));
+        for_each_contact_face(
+          fvf,
+          [&](const DoFHandler<3>::active_cell_iterator &cell,
+              const unsigned int,
+              const double r) {
+            fvf.get_function_values(ghosted, u_values);
+            fvf.get_function_gradients(ghosted, u_grads);
+            double p = 0., t = 0., a = 0., area = 0.;
+            for (unsigned int q = 0; q < nq; ++q)
+              {
+                const PointInput in =
+                  face_point_input(fvf, q, u_values[q], u_grads[q], r);
+                const PointState st =
+                  evaluate_contact_point(in, NonlinearScheme::newton);
+                p += -st.lambda_n * fvf.JxW(q);
+                t += st.lambda_t.norm() * fvf.JxW(q);
+                a += (st.lambda_n < 0. ? 1. : 0.) * fvf.JxW(q);
+                area += fvf.JxW(q);
+              }
+            const unsigned int k = cell->active_cell_index();
+            pressure[k]          = p / area;
+            tangential[k]        = t / area;
+            fraction[k]          = a / area;
+          });
+      }
       ContactPostprocessor contact_post(prm, obstacle);
       ContactFaces         faces;
       faces.attach_dof_handler(dof_handler);
       faces.add_data_vector(ghosted, names, DataOutFaces<3>::type_dof_data,
                             interpretation);
       faces.add_data_vector(ghosted, contact_post);
+      faces.add_data_vector(pressure, "contact_pressure",
+                            DataOutFaces<3>::type_cell_data);
+      faces.add_data_vector(tangential, "tangential_stress",
+                            DataOutFaces<3>::type_cell_data);
+      faces.add_data_vector(fraction, "contact_fraction",
+                            DataOutFaces<3>::type_cell_data);
       faces.build_patches(mapping, degree + 2);
       // DataOutFaces has no pvtu helper: write pieces and the record here.
       const unsigned int rank = Utilities::MPI::this_mpi_process(comm);

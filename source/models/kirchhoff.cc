@@ -446,6 +446,14 @@ namespace NitscheContact
       }
 
     build_cell_kit();
+    if (formulation == Formulation::nitsche && !bias_warned)
+      {
+        bias_warned = true;
+        const std::string w = theta_bending_bias_warning(
+          prm, prm.thickness, "Kirchhoff plate with Nitsche contact");
+        if (!w.empty())
+          std::cout << w << std::endl;
+      }
     if (kit.inverse_constant > 0. && prm.theta != -1. && !coercivity_warned)
       {
         const double bound =
@@ -1593,7 +1601,9 @@ namespace NitscheContact
     for (unsigned int c = 0; c < cells.size(); ++c)
       {
         cell_coefficients(solution, c, u);
-        double p = 0., a = 0., g = 0., area = 0.;
+        // (the gap: mean over the points with an obstacle below, NaN in
+        // a cell without any, as where a sphere does not reach)
+        double p = 0., a = 0., g = 0., area = 0., g_area = 0.;
         for (unsigned int q = 0; q < nq; ++q)
           {
             const PointInput in = point_input(c, q, u);
@@ -1601,13 +1611,18 @@ namespace NitscheContact
               evaluate_contact_point(in, NonlinearScheme::newton);
             p += -st.lambda_n * kit.JxW[q];
             a += (st.lambda_n < 0. ? 1. : 0.) * kit.JxW[q];
-            g += (in.gap - in.u_n) * kit.JxW[q];
+            if (ObstacleSurface::has_obstacle(in.gap))
+              {
+                g += (in.gap - in.u_n) * kit.JxW[q];
+                g_area += kit.JxW[q];
+              }
             area += kit.JxW[q];
           }
         const unsigned int k = cells[c]->active_cell_index();
         pressure[k]          = p / area;
         status[k]            = a / area;
-        gap[k]               = g / area;
+        gap[k] = g_area > 0. ? g / g_area :
+                               std::numeric_limits<float>::quiet_NaN();
       }
 
     DataOut<2> data_out;

@@ -382,9 +382,17 @@ namespace NitscheContact
     base.reinit(dof_handler.n_dofs());
     increment.reinit(dof_handler.n_dofs());
 
-    r = prm.gamma0 * prm.youngs_modulus /
-        (settings.nitsche_length_is_thickness ? prm.thickness :
-                                                std::max(hx, hy));
+    const double h_n = settings.nitsche_length_is_thickness ?
+                         prm.thickness :
+                         std::max(hx, hy);
+    r = prm.gamma0 * prm.youngs_modulus / h_n;
+    {
+      const std::string w =
+        theta_bending_bias_warning(prm, h_n, "Mindlin plate");
+      if (!w.empty() && w != bias_warning)
+        std::cout << w << std::endl;
+      bias_warning = w;
+    }
     if (settings.multigrid)
       setup_multigrid();
   }

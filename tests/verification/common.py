@@ -18,10 +18,11 @@ def parse_args():
     return p.parse_args()
 
 
-def run(args, name, prm_text, np=1, expect_status=0):
+def run(args, name, prm_text, np=1, expect_status=0, output_format="none"):
     """Write <workdir>/<name>.prm (with Output/Directory set to <name>),
     run the program, and return (summary dict or None, stdout+stderr).
-    expect_status: the exit status required, or a list of allowed ones."""
+    expect_status: the exit status required, or a list of allowed ones;
+    output_format: Output/Format (no graphical output by default)."""
     os.makedirs(args.workdir, exist_ok=True)
     outdir = os.path.join(args.workdir, name)
     # no files of an earlier run may pass for this run's output
@@ -29,7 +30,8 @@ def run(args, name, prm_text, np=1, expect_status=0):
     prm_file = os.path.join(args.workdir, name + ".prm")
     with open(prm_file, "w") as f:
         f.write(prm_text)
-        f.write("\nsubsection Output\n  set Directory = %s\n  set Format = none\nend\n" % outdir)
+        f.write("\nsubsection Output\n  set Directory = %s\n  set Format = %s\nend\n"
+                % (outdir, output_format))
     cmd = [args.exe, prm_file]
     if np > 1:
         cmd = [args.mpiexec or "mpiexec", "-np", str(np)] + cmd
@@ -45,6 +47,55 @@ def run(args, name, prm_text, np=1, expect_status=0):
         with open(path) as f:
             summary = json.load(f)
     return summary, proc.stdout
+
+
+def read_vtu(path):
+    """{name: (list of values, components)} of a VTU file as deal.II writes
+    it: ASCII, or each DataArray inline as base64(header) + base64(zlib
+    blocks), the header being the uint32s (blocks, block size, last size,
+    compressed sizes...). Plain Python (the tests do not need numpy)."""
+    import base64, struct, zlib
+    import xml.etree.ElementTree as ET
+    types = {"Float32": "f", "Float64": "d", "Int32": "i", "Int64": "q",
+             "UInt8": "B", "UInt32": "I"}
+    arrays = {}
+    for d in ET.parse(path).getroot().iter("DataArray"):
+        name = d.get("Name") or "Points"
+        text = (d.text or "").strip()
+        if d.get("format") == "ascii":
+            values = [float(v) for v in text.split()]
+        else:
+            blocks = struct.unpack("<I", base64.b64decode(text[:8])[:4])[0]
+            n_header = 3 + blocks
+            chars = 4 * ((4 * n_header + 2) // 3)
+            header = struct.unpack("<%dI" % n_header, base64.b64decode(text[:chars]))
+            data, raw, pos = base64.b64decode(text[chars:]), b"", 0
+            for size in header[3:]:
+                raw += zlib.decompress(data[pos:pos + size])
+                pos += size
+            code = types[d.get("type")]
+            values = list(struct.unpack("<%d%s" % (len(raw) // struct.calcsize(code), code), raw))
+        arrays[name] = (values, int(d.get("NumberOfComponents", "1")))
+    return arrays
+
+
+def integrate_patch_field(arrays, name):
+    """Integral over the x-y projection of a VTU made of quadrilaterals
+    (a plate, or the bottom faces of the 3D model) of a field that is
+    constant on every quadrilateral (cell data, which deal.II writes as
+    point values), and the projected area."""
+    points, dim = arrays["Points"]
+    connectivity = arrays["connectivity"][0]
+    field = arrays[name][0]
+    total = area = 0.
+    for k in range(0, len(connectivity), 4):
+        q = connectivity[k:k + 4]
+        x = [points[dim * i] for i in q]
+        y = [points[dim * i + 1] for i in q]
+        a = 0.5 * abs((x[0] - x[2]) * (y[1] - y[3]) - (x[1] - x[3]) * (y[0] - y[2]))
+        total += a * field[q[0]]
+        area += a
+    return total, area
 
 
 def first_corrections(log):

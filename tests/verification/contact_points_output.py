@@ -27,7 +27,8 @@ Finally parameters/plot_contact_points.py draws two of the files, and
 with --against the status changes of two iterates."""
 import csv, os, re, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import shipped_prm, parse_args, run, check, close, finish
+from common import (shipped_prm, parse_args, run, check, close, finish, read_vtu,
+                    integrate_patch_field)
 
 args = parse_args()
 here = os.path.dirname(os.path.abspath(__file__))
@@ -102,7 +103,8 @@ for tag, prm, changes, ranks in cases:
     for np in ranks:
         name = "%s_np%d" % (tag, np)
         summary, log = run(args, name,
-                           prm_from(prm, changes, (tag, np) in per_iteration), np=np)
+                           prm_from(prm, changes, (tag, np) in per_iteration), np=np,
+                           output_format="vtu")
         if (tag, np) in per_iteration:
             check_iterates(name, summary, log)
         for record in summary["cycles"]:
@@ -128,6 +130,31 @@ for tag, prm, changes, ranks in cases:
                       for p in pts), what + ": pressure >= 0, positive only at active points")
             check(all((p["s_n"] > 0.) == (p["status"] == 0) for p in pts),
                   what + ": s_n > 0 exactly at the inactive points")
+            # The VTU's cell fields against the same points: contact_pressure
+            # (the cell's or bottom face's mean of the points' pressures) and
+            # contact_fraction (the share of the weights in contact)
+            # integrate to the contact force and the contact area (float32
+            # output: 1e-5). Before session 18 the 3D file evaluated the
+            # pressure at its output points, between the contact points,
+            # where it could exceed the largest point pressure 1e4-fold.
+            directory = os.path.join(args.workdir, name)
+            pieces = sorted(f for f in os.listdir(directory)
+                            if re.match(r"(contact-|solution_|kirchhoff_)%02d\.\d+\.vtu$"
+                                        % c, f) and not (tag == "elasticity" and
+                                                         f.startswith("solution_")))
+            pieces = [read_vtu(os.path.join(directory, f)) for f in pieces]
+            check(len(pieces) == np, "%s: %d VTU pieces for %d ranks" % (what, len(pieces), np))
+            force = sum(integrate_patch_field(a, "contact_pressure")[0] for a in pieces)
+            area = sum(integrate_patch_field(a, "contact_fraction")[0] for a in pieces)
+            plate = sum(integrate_patch_field(a, "contact_pressure")[1] for a in pieces)
+            close(force, record["contact_force"], 1e-5,
+                  what + ": VTU contact_pressure integrates to the contact force")
+            close(area, record["contact_area"], 1e-5,
+                  what + ": VTU contact_fraction integrates to the contact area")
+            close(plate, 100., 1e-6, what + ": the VTU covers the plate once")
+            pmax = max(p["pressure"] for p in pts)
+            check(max(max(a["contact_pressure"][0]) for a in pieces) <= pmax * (1 + 1e-6),
+                  what + ": VTU contact_pressure at most the largest point pressure %g" % pmax)
             half = 0.5 * record["h"] * (1 + 1e-9)
             check(all(abs(p["x"] - p["cell_x"]) <= half and abs(p["y"] - p["cell_y"]) <= half
                       for p in pts), what + ": every point within its cell (h = %g)" % record["h"])

@@ -23,12 +23,19 @@ checked against an independent source:
    vertices are held at 0, the interior is not; min_deflection must equal
    the minimum of the field sampled on a 101 x 101 grid (field.csv, a
    second evaluation of the same field at other points) to 1e-3.
+7. A sphere smaller than the plate (session 18 review): where it does not
+   reach, the VTU gap fields must be NaN (README), not the internal
+   sentinel 1e30: the 3D contact file's initial_gap and penetration at the
+   output points, the Kirchhoff cell field gap (a cell mean, NaN only where
+   no point of the cell has the sphere below). Independent check: the
+   points with NaN are exactly those outside the sphere's disc, and the
+   finite values are bounded by the geometry (gap <= R + |z_c| + t).
 """
 import json
 import os
 import shutil
 import subprocess
-from common import parse_args, run, check, close, finish
+from common import parse_args, run, check, close, finish, read_vtu
 
 args = parse_args()
 q, a, t = 0.02, 10.0, 0.01
@@ -164,4 +171,46 @@ if c and os.path.exists(field):
     close(c["min_deflection"], dense, 1e-3, "one SS cell: min_deflection vs 101x101 field grid")
 else:
     check(False, "one SS cell: summary and field.csv written")
+
+# 7. no obstacle below part of the plate: NaN in the VTU gap fields
+centre, radius = (5., 5., -2.), 2.
+SPHERE = """
+set Model = %s
+subsection Geometry
+  set Subdivisions = %s
+  set Number of cycles = 1
+end
+subsection Load
+  set Transverse load = 0
+end
+subsection Obstacle
+  set Type = sphere
+  set Sphere center = 5, 5, -2
+  set Sphere radius = 2
+end
+"""
+for model, sub, piece, fields in [("elasticity", "8, 8, 1", "contact-00.0000.vtu",
+                                   ["initial_gap", "penetration"]),
+                                  ("kirchhoff", "8, 8", "kirchhoff_00.0.vtu", ["gap"])]:
+    s, _ = run(args, "sphere_" + model, SPHERE % (model, sub), output_format="vtu")
+    path = os.path.join(args.workdir, "sphere_" + model, piece)
+    check(s is not None and os.path.exists(path), model + ", small sphere: VTU written")
+    if not os.path.exists(path):
+        continue
+    vtu = read_vtu(path)
+    points, dim = vtu["Points"]
+    bound = radius + abs(centre[2]) + t
+    for name in fields:
+        values = vtu[name][0]
+        finite = [v for v in values if v == v]
+        check(len(finite) < len(values) and all(abs(v) <= bound for v in finite),
+              "%s, small sphere: %s NaN at %d of %d points, finite values within %g "
+              "(largest %.3g)" % (model, name, len(values) - len(finite), len(values),
+                                  bound, max(abs(v) for v in finite) if finite else 0.))
+    if model == "elasticity":
+        # the output point lies outside the disc exactly where there is NaN
+        outside = [(points[dim * i] - centre[0]) ** 2 + (points[dim * i + 1] - centre[1]) ** 2
+                   >= radius ** 2 for i in range(len(vtu["initial_gap"][0]))]
+        nan = [v != v for v in vtu["initial_gap"][0]]
+        check(outside == nan, "3D, small sphere: initial_gap NaN exactly outside the disc")
 finish()

@@ -95,5 +95,40 @@ for alpha, theta, expect in [(2e-4, 1, True), (1.8e-4, 1, False), (2e-4, 0, Fals
     check(("Stabilisation alpha" in out and "coercivity bound" in out) == expect,
           "Kirchhoff GSV, alpha*D = %g, theta = %d: %s"
           % (alpha, theta, "warned" if expect else "no warning"))
+
+# The theta-term bias of the inserted-kinematics plates (doc/mindlin.md
+# section 2): c/D = 3(1-nu^2)(lambda/E)^2 (h_n/t)/gamma0, computed here from
+# the material data; a warning naming the change in % when it exceeds 1 %.
+nu = 0.3
+lam_over_E = nu / ((1 + nu) * (1 - 2 * nu))
+factor = 3 * (1 - nu ** 2) * lam_over_E ** 2
+mindlin = open(os.path.join(here, "..", "..", "parameters", "paper_mindlin.prm")).read()
+
+
+def bias_case(text, entries):
+    for entry, value in entries:
+        text, n = re.subn(r"(?m)^(\s*set %s\s*=).*$" % re.escape(entry),
+                          lambda m: m.group(1) + " " + value, text)
+        check(n == 1, "one entry '%s'" % entry)
+    return text
+
+
+t = 0.01
+for tag, text, theta, gamma0, h_n in [
+        ("mindlin_g20", mindlin, 1, 20, t), ("mindlin_g200", mindlin, 1, 200, t),
+        ("mindlin_theta0", mindlin, 0, 20, t), ("mindlin_theta-1", mindlin, -1, 20, t),
+        ("kirchhoff_nitsche_g20", open(os.path.join(here, "..", "..", "parameters",
+                                                    "kirchhoff_nitsche.prm")).read(), 1, 20, t)]:
+    s, out = run(args, "bias_" + tag,
+                 bias_case(text, [("Number of cycles", "1"), ("Nitsche theta", str(theta)),
+                                  ("Nitsche gamma0", str(gamma0)),
+                                  ("Maximum iterations", "1\n  set Allow non-convergence = true")]),
+                 expect_status=[0, 2])
+    change = -theta * 100 * factor * (h_n / t) / gamma0
+    expect = abs(change) > 1
+    text = "bending stiffness by %.3g %%" % change
+    check((text in out) == expect and ("theta-terms" in out) == expect,
+          "%s: theta = %d, gamma0 = %g: %s" % (tag, theta, gamma0,
+                                              "warned, '" + text + "'" if expect else "no warning"))
 finish()
 

@@ -270,6 +270,8 @@ namespace NitscheContact
     CellKit kit;
     /// the GSV coercivity warning was printed (once per run)
     bool coercivity_warned = false;
+    /// the theta-term bias warning of Kirchhoff with Nitsche was printed
+    bool bias_warned = false;
     /// u[0..15] = the 16 coefficients of v on cell c (lexicographic index)
     void
     cell_coefficients(const dealii::Vector<double> &v,

@@ -225,6 +225,9 @@ namespace NitscheContact
     double lambda; ///< 3D Lame lambda (used in sigma_n)
     double mu;     ///< shear modulus
     double r;      ///< Nitsche parameter gamma0 E / h_n
+    /// the last theta-term bias warning printed (repeated only when h_n,
+    /// and with it the bias, changes)
+    std::string bias_warning;
 
     dealii::Triangulation<2> triangulation;
     dealii::FESystem<2>      fe;
