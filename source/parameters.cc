@@ -281,11 +281,13 @@ namespace NitscheContact
   {
     // the entry that holds the constants: the load has its own, the exact
     // solution and its derivatives share those of 'Reference solution'
-    // (the obstacle height has none)
+    // (the obstacle height and the top traction have none)
     const std::string constants_entry =
-      entry.rfind("Load/", 0) == 0      ? "Load/Function constants" :
-      entry.rfind("Obstacle/", 0) == 0 ? "" :
-                                          "Reference solution/Function constants";
+      entry.rfind("Load/", 0) == 0 ? "Load/Function constants" :
+      (entry.rfind("Obstacle/", 0) == 0 ||
+       entry == "Elasticity/Top tangential traction") ?
+                                     "" :
+                                     "Reference solution/Function constants";
     const std::string vars = dim == 2 ? "x,y" : "x,y,z";
     std::map<std::string, double> consts;
     consts["pi"] = numbers::PI;
@@ -857,41 +859,11 @@ namespace NitscheContact
     }
     prm.leave_subsection();
 
-    // Magnitudes: the bending stiffness D, the deflection scale q L^4 / D
-    // and, for the models whose contact term uses it (3D, Mindlin), the
-    // Nitsche parameter r = gamma0 E/t and the contact force scale r w L^2
-    // must be finite, nonzero double numbers (overflow or underflow
-    // otherwise surfaces mid-run as a non-finite residual or a singular
-    // matrix).
-    {
-      const double L    = std::max(length_x, length_y);
-      const double D    = bending_stiffness();
-      const double r    = model == "kirchhoff" ?
-                            1. :
-                            gamma0 * youngs_modulus / thickness;
-      const double w    = load_scale * (L * L) * (L * L) / D;
-      const double tiny = std::numeric_limits<double>::min();
-      const bool sound  = std::isfinite(D) && D > tiny && std::isfinite(r) &&
-                         r > tiny && std::isfinite(w) &&
-                         (load_scale == 0. || w > tiny) &&
-                         std::isfinite(load_scale * L * L) &&
-                         std::isfinite(r * w * L * L);
-      if (!sound)
-        throw InputError(
-          "the magnitudes of 'Material/Young's modulus' = " +
-          number_to_string(youngs_modulus) + ", 'Geometry/Thickness' = " +
-          number_to_string(thickness) + ", 'Geometry/Length x' = " +
-          number_to_string(length_x) + ", 'Geometry/Length y' = " +
-          number_to_string(length_y) + ", 'Contact/Nitsche gamma0' = " +
-          number_to_string(gamma0) + " and 'Load/Transverse load' (up to " +
-          number_to_string(load_scale) +
-          ") overflow or underflow double precision: the bending stiffness "
-          "E t^3/(12(1-nu^2)) = " + number_to_string(D) +
-          ", gamma0 E / t = " + number_to_string(r) +
-          " and the deflection scale q L^4 / D = " + number_to_string(w) +
-          " must be finite and nonzero; allowed: magnitudes of consistent "
-          "units (e.g. SI or N-mm)");
-    }
+    // Magnitudes (the Kirchhoff model checks its Nitsche variant itself:
+    // its contact formulation is its own parameter)
+    check_magnitudes(model == "kirchhoff" ?
+                       0. :
+                       gamma0 * youngs_modulus / thickness);
 
     prm.enter_subsection("Nonlinear solver");
     {
@@ -1109,6 +1081,46 @@ namespace NitscheContact
            ", between the points where the input check evaluated it; it "
            "must be a finite number on the whole plate";
   }
+
+  void
+  CommonParameters::check_magnitudes(const double r) const
+  {
+    // The bending stiffness D, the deflection scale w = q L^4 / D and, for
+    // a contact term with the Nitsche parameter r (> 0), r and the contact
+    // force scale r w L^2 must be finite, nonzero double numbers (overflow
+    // or underflow otherwise surfaces mid-run as a non-finite residual or
+    // a singular matrix).
+    const double L     = std::max(length_x, length_y);
+    const double D     = bending_stiffness();
+    const double w     = load_scale * (L * L) * (L * L) / D;
+    const double tiny  = std::numeric_limits<double>::min();
+    const double rr    = r > 0. ? r : 1.;
+    const bool   sound = std::isfinite(D) && D > tiny && std::isfinite(rr) &&
+                       rr > tiny && std::isfinite(w) &&
+                       (load_scale == 0. || w > tiny) &&
+                       std::isfinite(load_scale * L * L) &&
+                       std::isfinite(rr * w * L * L);
+    if (!sound)
+      throw InputError(
+        "the magnitudes of 'Material/Young's modulus' = " +
+        number_to_string(youngs_modulus) + ", 'Geometry/Thickness' = " +
+        number_to_string(thickness) + ", 'Geometry/Length x' = " +
+        number_to_string(length_x) + ", 'Geometry/Length y' = " +
+        number_to_string(length_y) +
+        (r > 0. ? ", 'Contact/Nitsche gamma0' = " + number_to_string(gamma0) :
+                  std::string()) +
+        " and 'Load/Transverse load' (up to " + number_to_string(load_scale) +
+        ") overflow or underflow double precision: the bending stiffness "
+        "E t^3/(12(1-nu^2)) = " + number_to_string(D) +
+        (r > 0. ? ", the Nitsche parameter gamma0 E / h_n = " +
+                    number_to_string(r) :
+                  std::string()) +
+        " and the deflection scale q L^4 / D = " + number_to_string(w) +
+        " must be finite and nonzero; allowed: magnitudes of consistent "
+        "units (e.g. SI or N-mm)");
+  }
+
+
 
   std::string
   theta_bending_bias_warning(const CommonParameters &prm,

@@ -182,6 +182,14 @@ namespace NitscheContact
     void
     parse(dealii::ParameterHandler &prm);
 
+    /// InputError naming the entries unless the bending stiffness, the
+    /// deflection scale |q| L^4 / D and, for r > 0 (the Nitsche parameter
+    /// of the model's contact term), r and r |q| L^6 / D are finite and
+    /// nonzero double numbers. Called by parse() (3D and Mindlin: r =
+    /// gamma0 E / t) and by models with a contact term of their own.
+    void
+    check_magnitudes(double r) const;
+
     /// Convenience: the Lame constants of the material.
     double
     lambda() const

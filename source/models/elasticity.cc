@@ -159,10 +159,15 @@ namespace NitscheContact
     class ContactPostprocessor : public DataPostprocessor<3>
     {
     public:
-      ContactPostprocessor(const CommonParameters &prm,
-                           const ObstacleSurface  &obstacle)
+      /// face_means: per active cell (of its contact face), the means of
+      /// the pressure, of |Lambda_t| and the contact fraction over the
+      /// contact quadrature points, written as constants on the face.
+      ContactPostprocessor(const CommonParameters                  &prm,
+                           const ObstacleSurface                   &obstacle,
+                           const std::array<Vector<double>, 3> &face_means)
         : prm(prm)
         , obstacle(obstacle)
+        , face_means(face_means)
       {}
 
       void
@@ -171,6 +176,9 @@ namespace NitscheContact
         std::vector<Vector<double>>              &out) const override
       {
         const auto cell = in.template get_cell<3>();
+        // (the cell data of the face, looked up here: DataOutFaces' own
+        // cell data costs a walk over all cells per face)
+        const unsigned int k = cell->active_cell_index();
         // bottom face (face 4 of a hexahedron) of this cell: h_n = |K|/|F|
         const double h_n = cell->measure() / cell->face(4)->measure();
         const double r   = prm.gamma0 * prm.youngs_modulus / h_n;
@@ -188,14 +196,16 @@ namespace NitscheContact
                                                 prm.friction);
             const PointState st =
               evaluate_contact_point(pi, NonlinearScheme::newton);
-            out[q](0) = static_cast<double>(st.status);
+            for (unsigned int m = 0; m < 3; ++m)
+              out[q](m) = face_means[m][k];
+            out[q](3) = static_cast<double>(st.status);
             // no obstacle below the point (a sphere's shadow ends): NaN,
             // which ParaView leaves out of colour ranges
             const bool obstacle_below = ObstacleSurface::has_obstacle(pi.gap);
-            out[q](1) = obstacle_below ?
+            out[q](4) = obstacle_below ?
                           pi.gap :
                           std::numeric_limits<double>::quiet_NaN();
-            out[q](2) = obstacle_below ?
+            out[q](5) = obstacle_below ?
                           pi.u_n - pi.gap :
                           std::numeric_limits<double>::quiet_NaN();
           }
@@ -204,11 +214,12 @@ namespace NitscheContact
       std::vector<std::string>
       get_names() const override
       {
-        // (the pressures are face means of the contact points, added as
-        // cell data by write_graphical_output: Lambda_n evaluated at the
-        // output points, between the contact points, is r times the
-        // nodes' penetration and says nothing about the pressure)
-        return {"contact_status", "initial_gap", "penetration"};
+        // (the pressures are face means over the contact points: Lambda_n
+        // evaluated at the output points, between the contact points, is
+        // r times the nodes' penetration and says nothing about the
+        // pressure)
+        return {"contact_pressure", "tangential_stress", "contact_fraction",
+                "contact_status",   "initial_gap",       "penetration"};
       }
 
       UpdateFlags
@@ -218,8 +229,9 @@ namespace NitscheContact
       }
 
     private:
-      const CommonParameters &prm;
-      const ObstacleSurface  &obstacle;
+      const CommonParameters              &prm;
+      const ObstacleSurface               &obstacle;
+      const std::array<Vector<double>, 3> &face_means;
     };
 
     /// Von Mises stress and the stress components in the volume output.
@@ -1730,9 +1742,11 @@ namespace NitscheContact
       // discrete problem imposes contact; their sum is contact_force):
       // pressure p = -Lambda_n, |Lambda_t|, and the fraction of the face
       // area with p > 0. Stored per cell, the cell of each contact face.
-      Vector<double> pressure(triangulation.n_active_cells()),
-        tangential(triangulation.n_active_cells()),
-        fraction(triangulation.n_active_cells());
+      std::array<Vector<double>, 3> face_means;
+      for (auto &v : face_means)
+        v.reinit(triangulation.n_active_cells());
+      Vector<double> &pressure = face_means[0], &tangential = face_means[1],
+                     &fraction = face_means[2];
       {
         FEFaceValues<3> fvf(mapping, fe, contact_face_quadrature,
                             update_values | update_gradients |
@@ -1767,18 +1781,12 @@ namespace NitscheContact
             fraction[k]          = a / area;
           });
       }
-      ContactPostprocessor contact_post(prm, obstacle);
+      ContactPostprocessor contact_post(prm, obstacle, face_means);
       ContactFaces         faces;
       faces.attach_dof_handler(dof_handler);
       faces.add_data_vector(ghosted, names, DataOutFaces<3>::type_dof_data,
                             interpretation);
       faces.add_data_vector(ghosted, contact_post);
-      faces.add_data_vector(pressure, "contact_pressure",
-                            DataOutFaces<3>::type_cell_data);
-      faces.add_data_vector(tangential, "tangential_stress",
-                            DataOutFaces<3>::type_cell_data);
-      faces.add_data_vector(fraction, "contact_fraction",
-                            DataOutFaces<3>::type_cell_data);
       faces.build_patches(mapping, degree + 2);
       // DataOutFaces has no pvtu helper: write pieces and the record here.
       const unsigned int rank = Utilities::MPI::this_mpi_process(comm);

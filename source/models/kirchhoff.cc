@@ -246,6 +246,9 @@ namespace NitscheContact
       bad_value("Kirchhoff/Obstacle compliance kappa",
                 number_to_string(kappa),
                 "must be >= 0");
+    // (the common check left out the Nitsche parameter of this model)
+    if (formulation == Formulation::nitsche)
+      prm.check_magnitudes(prm.gamma0 * prm.youngs_modulus / prm.thickness);
     if (use_multigrid && formulation == Formulation::nitsche)
       bad_value("Kirchhoff/Linear solver",
                 "multigrid",

@@ -220,6 +220,15 @@ CASES = [
     ("gamma0 overflowing the contact force scale",
      "subsection Contact\n  set Nitsche gamma0 = 1e300\nend",
      ["Contact/Nitsche gamma0", "1e+300", "overflow"]),
+    ("Kirchhoff with Nitsche: gamma0 overflowing the contact force scale",
+     "set Model = kirchhoff\nsubsection Geometry\n  set Subdivisions = 2, 2\nend\n"
+     "subsection Kirchhoff\n  set Contact formulation = nitsche\nend\n"
+     "subsection Contact\n  set Nitsche gamma0 = 1e300\nend",
+     ["Contact/Nitsche gamma0", "1e+300", "overflow"]),
+    ("top traction naming a constant (it has none)",
+     "subsection Elasticity\n  set Top tangential traction = q0; 0\nend\n"
+     "subsection Load\n  set Function constants = q0=1\nend",
+     ["Elasticity/Top tangential traction", "q0; 0", "plus pi)"]),
     ("degenerate side ratio",
      "subsection Geometry\n  set Length x = 1e20\nend",
      ["Geometry/Length x", "1e+20", "Geometry/Length y", "[1e-6, 1e6]"]),

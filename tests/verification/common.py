@@ -62,7 +62,9 @@ def read_vtu(path):
     for d in ET.parse(path).getroot().iter("DataArray"):
         name = d.get("Name") or "Points"
         text = (d.text or "").strip()
-        if d.get("format") == "ascii":
+        if not text:  # a rank without cells writes empty arrays
+            values = []
+        elif d.get("format") == "ascii":
             values = [float(v) for v in text.split()]
         else:
             blocks = struct.unpack("<I", base64.b64decode(text[:8])[:4])[0]

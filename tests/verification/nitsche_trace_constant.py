@@ -117,6 +117,9 @@ t = 0.01
 for tag, text, theta, gamma0, h_n in [
         ("mindlin_g20", mindlin, 1, 20, t), ("mindlin_g200", mindlin, 1, 200, t),
         ("mindlin_theta0", mindlin, 0, 20, t), ("mindlin_theta-1", mindlin, -1, 20, t),
+        ("mindlin_cell_size_g200", mindlin.replace(
+            "subsection Mindlin", "subsection Mindlin\n  set Nitsche length = cell size"),
+         1, 200, 10. / 8),
         ("kirchhoff_nitsche_g20", open(os.path.join(here, "..", "..", "parameters",
                                                     "kirchhoff_nitsche.prm")).read(), 1, 20, t)]:
     s, out = run(args, "bias_" + tag,
