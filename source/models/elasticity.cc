@@ -1546,8 +1546,9 @@ namespace NitscheContact
     return value;
   }
 
-  std::vector<ContactPointRecord>
-  ElasticityModel::contact_points() const
+  template <typename PointWork>
+  void
+  ElasticityModel::for_each_contact_point(PointWork &&work) const
   {
     FEFaceValues<3> fvf(mapping, fe, contact_face_quadrature,
                         update_values | update_gradients |
@@ -1557,7 +1558,6 @@ namespace NitscheContact
     std::vector<Vector<double>> u_values(nq, Vector<double>(3));
     std::vector<std::vector<Tensor<1, 3>>> u_grads(
       nq, std::vector<Tensor<1, 3>>(3));
-    std::vector<ContactPointRecord> points;
     for_each_contact_face(
       fvf,
       [&](const DoFHandler<3>::active_cell_iterator &cell,
@@ -1565,17 +1565,31 @@ namespace NitscheContact
           const double                               r) {
         fvf.get_function_values(ghosted, u_values);
         fvf.get_function_gradients(ghosted, u_grads);
-        const Point<3> centre = cell->face(f)->center();
         for (unsigned int q = 0; q < nq; ++q)
           {
-            const Point<3>  &x  = fvf.quadrature_point(q);
             const PointInput in =
               face_point_input(fvf, q, u_values[q], u_grads[q], r);
-            points.push_back(make_contact_point_record(
-              in, evaluate_contact_point(in, NonlinearScheme::newton),
-              x[0], x[1], centre[0], centre[1], fvf.JxW(q)));
+            work(cell, f, fvf.quadrature_point(q), in,
+                 evaluate_contact_point(in, NonlinearScheme::newton),
+                 fvf.JxW(q));
           }
       });
+  }
+
+  std::vector<ContactPointRecord>
+  ElasticityModel::contact_points() const
+  {
+    std::vector<ContactPointRecord> points;
+    for_each_contact_point([&](const DoFHandler<3>::active_cell_iterator &cell,
+                               const unsigned int                         f,
+                               const Point<3>                            &x,
+                               const PointInput                          &in,
+                               const PointState                          &st,
+                               const double                               JxW) {
+      const Point<3> centre = cell->face(f)->center();
+      points.push_back(make_contact_point_record(
+        in, st, x[0], x[1], centre[0], centre[1], JxW));
+    });
     const std::vector<std::vector<ContactPointRecord>> all =
       Utilities::MPI::gather(comm, points, 0);
     points.clear();
@@ -1745,42 +1759,25 @@ namespace NitscheContact
       std::array<Vector<double>, 3> face_means;
       for (auto &v : face_means)
         v.reinit(triangulation.n_active_cells());
-      Vector<double> &pressure = face_means[0], &tangential = face_means[1],
-                     &fraction = face_means[2];
-      {
-        FEFaceValues<3> fvf(mapping, fe, contact_face_quadrature,
-                            update_values | update_gradients |
-                              update_quadrature_points | update_JxW_values |
-                              update_normal_vectors);
-        const unsigned int          nq = contact_face_quadrature.size();
-        std::vector<Vector<double>> u_values(nq, Vector<double>(3));
-        std::vector<std::vector<Tensor<1, 3>>> u_grads(
-          nq, std::vector<Tensor<1, 3>>(3));
-        for_each_contact_face(
-          fvf,
-          [&](const DoFHandler<3>::active_cell_iterator &cell,
-              const unsigned int,
-              const double r) {
-            fvf.get_function_values(ghosted, u_values);
-            fvf.get_function_gradients(ghosted, u_grads);
-            double p = 0., t = 0., a = 0., area = 0.;
-            for (unsigned int q = 0; q < nq; ++q)
-              {
-                const PointInput in =
-                  face_point_input(fvf, q, u_values[q], u_grads[q], r);
-                const PointState st =
-                  evaluate_contact_point(in, NonlinearScheme::newton);
-                p += -st.lambda_n * fvf.JxW(q);
-                t += st.lambda_t.norm() * fvf.JxW(q);
-                a += (st.lambda_n < 0. ? 1. : 0.) * fvf.JxW(q);
-                area += fvf.JxW(q);
-              }
-            const unsigned int k = cell->active_cell_index();
-            pressure[k]          = p / area;
-            tangential[k]        = t / area;
-            fraction[k]          = a / area;
-          });
-      }
+      // (sums of weight x value, divided by the face's weight below)
+      Vector<double> area(triangulation.n_active_cells());
+      for_each_contact_point(
+        [&](const DoFHandler<3>::active_cell_iterator &cell,
+            const unsigned int,
+            const Point<3> &,
+            const PointInput &,
+            const PointState &st,
+            const double      JxW) {
+          const unsigned int k = cell->active_cell_index();
+          face_means[0][k] += -st.lambda_n * JxW;
+          face_means[1][k] += st.lambda_t.norm() * JxW;
+          face_means[2][k] += (st.lambda_n < 0. ? JxW : 0.);
+          area[k] += JxW;
+        });
+      for (unsigned int k = 0; k < area.size(); ++k)
+        if (area[k] > 0.)
+          for (auto &v : face_means)
+            v[k] /= area[k];
       ContactPostprocessor contact_post(prm, obstacle, face_means);
       ContactFaces         faces;
       faces.attach_dof_handler(dof_handler);

@@ -147,6 +147,12 @@ namespace NitscheContact
     template <typename FaceWork>
     void
     for_each_contact_face(dealii::FEFaceValues<3> &fvf, FaceWork &&work) const;
+    /// work(cell, f, x, in, state, JxW) for every contact quadrature point
+    /// of the locally owned cells at the current solution (x: the point,
+    /// in/state: the kernel's input and its evaluation, Newton scheme).
+    template <typename PointWork>
+    void
+    for_each_contact_point(PointWork &&work) const;
     /// The Nitsche parameter r = gamma0 E / h_n of a contact face.
     double
     nitsche_r(const dealii::DoFHandler<3>::active_cell_iterator &cell,
