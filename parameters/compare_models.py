@@ -6,8 +6,8 @@ and the figures.
   python3 parameters/compare_models.py [--exe build/nitsche-contact]
                                        [--out results/comparison] [--quick]
 
-Runs parameters/{paper_3d, paper_mindlin, paper_kirchhoff,
-kirchhoff_nitsche}.prm with a common output block (same probes, profile line
+Runs parameters/{paper_3d, paper_mindlin, paper_mindlin_mitc9,
+paper_kirchhoff, kirchhoff_nitsche}.prm with a common output block (same probes, profile line
 and field grid), reads each summary.json, profile.csv and field.csv, and
 writes into --out:
   comparison.md, comparison.csv   probe deflections, contact area, total
@@ -30,6 +30,7 @@ import time
 RUNS = [
     ("elasticity", "3D elasticity, Q2, Nitsche", "paper_3d.prm"),
     ("mindlin", "Mindlin-Reissner, MITC4, Nitsche", "paper_mindlin.prm"),
+    ("mindlin_mitc9", "Mindlin-Reissner, MITC9, Nitsche", "paper_mindlin_mitc9.prm"),
     ("kirchhoff_gsv", "Kirchhoff-Love, BFS, GSV", "paper_kirchhoff.prm"),
     ("kirchhoff_nitsche", "Kirchhoff-Love, BFS, Nitsche", "kirchhoff_nitsche.prm"),
 ]

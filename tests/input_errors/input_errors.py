@@ -144,6 +144,10 @@ CASES = [
      "set Model = mindlin\nsubsection Contact\n  set Friction coefficient = 0.2\nend\n"
      "subsection Mindlin\n  set Linear solver = multigrid\nend",
      ["Mindlin/Linear solver", "multigrid", "Friction coefficient"]),
+    ("Mindlin multigrid with MITC9",
+     "set Model = mindlin\nsubsection Mindlin\n  set Linear solver = multigrid\n"
+     "  set Shear treatment = MITC9\nend",
+     ["Mindlin/Linear solver", "multigrid", "MITC9", "Amesos_Mumps"]),
     ("Mindlin multigrid on an odd number of cells",
      "set Model = mindlin\nsubsection Geometry\n  set Subdivisions = 5, 4\nend\n"
      "subsection Mindlin\n  set Linear solver = multigrid\nend",

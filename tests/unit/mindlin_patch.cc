@@ -1,5 +1,6 @@
-// Patch test of the MITC4 assumed transverse shear of the Mindlin model
-// (MindlinModel::shear_strain) on a rectangle hx x hy = 0.7 x 0.3:
+// Patch test of the MITC4 and MITC9 assumed transverse shear of the Mindlin
+// model (MindlinModel::shear_strain) on a rectangle hx x hy = 0.7 x 0.3.
+// MITC4 (Q1):
 //  1. tying: for arbitrary nodal values, gamma_h,x on the edges y = y0, y1 is
 //     the edge average of the tangential shear, (w_b - w_a)/hx + (phi_a +
 //     phi_b).e_x / 2, at every point of the edge (likewise gamma_h,y);
@@ -9,6 +10,17 @@
 //  3. no parasitic shear: pure bending phi = (x, 0) with the Q1 interpolant
 //     of the Kirchhoff deflection -x^2/2 has zero MITC4 shear, while the
 //     plain ('full') shear is x - hx/2 (the cause of shear locking).
+// MITC9 (Q2):
+//  4. tying: for arbitrary nodal values, gamma_h,x equals the plain shear
+//     d_x w + phi_x at the six tying points (2 Gauss points in x times 3 in
+//     y) and is linear in x (gamma_h,y likewise with x and y swapped);
+//  5. consistency: for w in Q2 and phi = -grad w + g with g_x in P1(x) x
+//     P2(y) and g_y in P2(x) x P1(y) (so phi is in Q2 x Q2), gamma_h = g
+//     exactly;
+//  6. no parasitic shear: pure bending phi = (x^2, 0) with the Q2
+//     interpolant of the Kirchhoff deflection -x^3/3 has zero MITC9 shear
+//     (the interpolation errors of x^2 at the Gauss points and of x^3 at
+//     the Q2 nodes cancel), while the plain Q2 shear does not vanish.
 #include <deal.II/base/logstream.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
@@ -31,12 +43,18 @@ namespace
   gamma(const FESystem<2>        &fe,
         const std::vector<double> &values,
         const Point<2>            &p,
-        const bool                 mitc4)
+        const MindlinModel::Shear  shear)
   {
     Tensor<1, 2> g;
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-      g += values[i] * MindlinModel::shear_strain(fe, i, p, hx, hy, mitc4);
+      g += values[i] * MindlinModel::shear_strain(fe, i, p, hx, hy, shear);
     return g;
+  }
+
+  std::string
+  small(const double err)
+  {
+    return err < 1e-12 ? std::string("< 1e-12") : std::to_string(err);
   }
 
   // nodal values of (w, phi_x, phi_y) given as functions of the real point
@@ -62,6 +80,7 @@ main()
   deallog.attach(logfile, false);
   deallog << std::setprecision(8);
 
+  const auto        MITC4 = MindlinModel::Shear::mitc4;
   const FESystem<2> fe(FE_Q<2>(1), 3);
   std::mt19937      gen(7);
   std::uniform_real_distribution<double> dist(-1., 1.);
@@ -92,7 +111,7 @@ main()
             const double       expected =
               (nodal(0, b) - nodal(0, a)) / hx + 0.5 * (nodal(1, a) + nodal(1, b));
             err = std::max(err,
-                           std::abs(gamma(fe, values, Point<2>(s, e), true)[0] -
+                           std::abs(gamma(fe, values, Point<2>(s, e), MITC4)[0] -
                                     expected));
           }
         // left (0,2) and right (1,3) edges: gamma_y
@@ -102,7 +121,7 @@ main()
             const double       expected =
               (nodal(0, b) - nodal(0, a)) / hy + 0.5 * (nodal(2, a) + nodal(2, b));
             err = std::max(err,
-                           std::abs(gamma(fe, values, Point<2>(e, s), true)[1] -
+                           std::abs(gamma(fe, values, Point<2>(e, s), MITC4)[1] -
                                     expected));
           }
       }
@@ -122,7 +141,7 @@ main()
       double err = 0.;
       for (const double s : {0., 0.21, 0.5, 0.9})
         for (const double t : {0., 0.37, 1.})
-          err = std::max(err, (gamma(fe, v, Point<2>(s, t), true) - g).norm());
+          err = std::max(err, (gamma(fe, v, Point<2>(s, t), MITC4) - g).norm());
       deallog << "phi = -grad w + (" << g << "): max |gamma_h - g| "
               << (err < 1e-13 ? "< 1e-13" : std::to_string(err)) << std::endl;
     }
@@ -136,8 +155,93 @@ main()
       {
         const Point<2> p(s, 0.3);
         deallog << "bending, x = " << s * hx
-                << ": MITC4 gamma = " << gamma(fe, v, p, true)
-                << ", full gamma = " << gamma(fe, v, p, false) << std::endl;
+                << ": MITC4 gamma = " << gamma(fe, v, p, MITC4)
+                << ", full gamma = " << gamma(fe, v, p, MindlinModel::Shear::full) << std::endl;
+      }
+  }
+
+  // MITC9 on Q2
+  const auto        MITC9 = MindlinModel::Shear::mitc9;
+  const FESystem<2> fe2(FE_Q<2>(2), 3);
+  const double      a[2] = {0.5 - 0.5 / std::sqrt(3.), 0.5 + 0.5 / std::sqrt(3.)};
+  const double      b[3] = {0.5 - 0.5 * std::sqrt(0.6), 0.5, 0.5 + 0.5 * std::sqrt(0.6)};
+
+  // 4. tying points and linearity across them
+  {
+    std::vector<double> values(fe2.n_dofs_per_cell());
+    for (auto &x : values)
+      x = dist(gen);
+    double err_tied = 0., err_linear = 0.;
+    for (unsigned int d = 0; d < 2; ++d)
+      for (const double s : a)
+        for (const double t : b)
+          {
+            Point<2> p;
+            p[d]     = s;
+            p[1 - d] = t;
+            err_tied = std::max(err_tied,
+                                std::abs(gamma(fe2, values, p, MITC9)[d] -
+                                         gamma(fe2, values, p,
+                                               MindlinModel::Shear::full)[d]));
+          }
+    for (unsigned int d = 0; d < 2; ++d)
+      for (const double t : {0., 0.3, 0.8})
+        {
+          Point<2> p0, p1, pm;
+          p0[d] = 0., p1[d] = 1., pm[d] = 0.35;
+          p0[1 - d] = p1[1 - d] = pm[1 - d] = t;
+          const double g0 = gamma(fe2, values, p0, MITC9)[d],
+                       g1 = gamma(fe2, values, p1, MITC9)[d],
+                       gm = gamma(fe2, values, pm, MITC9)[d];
+          err_linear = std::max(err_linear, std::abs(gm - (0.65 * g0 + 0.35 * g1)));
+        }
+    deallog << "MITC9 tying: max deviation from the plain shear at the tying "
+               "points "
+            << small(err_tied) << ", from linearity across them "
+            << small(err_linear) << std::endl;
+  }
+
+  // 5. consistency: phi = -grad w + g
+  {
+    const auto v = interpolate(fe2, [&](const Point<2> &x) {
+      const double X = x[0], Y = x[1];
+      // w = 0.4 - 0.8 X + 1.1 Y + 0.5 XY + 0.7 X^2 - 0.9 Y^2 + 0.6 X^2 Y
+      //     - 1.3 X Y^2 + 0.8 X^2 Y^2
+      const double w = 0.4 - 0.8 * X + 1.1 * Y + 0.5 * X * Y + 0.7 * X * X -
+                       0.9 * Y * Y + 0.6 * X * X * Y - 1.3 * X * Y * Y +
+                       0.8 * X * X * Y * Y;
+      const double wx = -0.8 + 0.5 * Y + 1.4 * X + 1.2 * X * Y - 1.3 * Y * Y +
+                        1.6 * X * Y * Y;
+      const double wy = 1.1 + 0.5 * X - 1.8 * Y + 0.6 * X * X - 2.6 * X * Y +
+                        1.6 * X * X * Y;
+      const double gx = 0.3 + 0.2 * X * Y * Y, gy = -1.2 + 0.5 * X * X * Y;
+      return std::array<double, 3>{{w, -wx + gx, -wy + gy}};
+    });
+    double err = 0.;
+    for (const double s : {0., 0.21, 0.5, 0.9})
+      for (const double t : {0., 0.37, 1.})
+        {
+          const double X = s * hx, Y = t * hy;
+          const Tensor<1, 2> g({0.3 + 0.2 * X * Y * Y, -1.2 + 0.5 * X * X * Y});
+          err = std::max(err, (gamma(fe2, v, Point<2>(s, t), MITC9) - g).norm());
+        }
+    deallog << "MITC9, phi = -grad w + g, g in P1 x P2 / P2 x P1: max |gamma_h "
+               "- g| "
+            << small(err) << std::endl;
+  }
+
+  // 6. pure bending
+  {
+    const auto v = interpolate(fe2, [&](const Point<2> &x) {
+      return std::array<double, 3>{{-x[0] * x[0] * x[0] / 3., x[0] * x[0], 0.}};
+    });
+    for (const double s : {0., 0.3, 1.})
+      {
+        const Point<2>     p(s, 0.6);
+        const Tensor<1, 2> m = gamma(fe2, v, p, MITC9);
+        deallog << "MITC9 bending, x = " << s * hx << ": MITC9 |gamma| "
+                << small(m.norm()) << ", plain Q2 gamma_x = "
+                << gamma(fe2, v, p, MindlinModel::Shear::full)[0] << std::endl;
       }
   }
 }

@@ -4,7 +4,8 @@ cycle records of summary.json (computed by each model's postprocessing and
 by the driver's status counts), and the 3D file on 2 MPI ranks against 1.
 Runs: the paper's test with each model on small meshes (3D 8 x 8 x 1 ->
 16 x 16 x 1, Gauss-Lobatto contact points, gamma0 = 60; Mindlin with
-friction F = 0.2, 8^2 -> 16^2, where the active points slip;
+friction F = 0.2, 8^2 -> 16^2, where the active points slip; Mindlin
+MITC9, frictionless, 4^2 -> 8^2;
 Kirchhoff GSV 16^2 -> 32^2).
 Checks per cycle: one row per contact point (summary 'contact_points'),
 the rows with status > 0 are the active points ('active_points', and
@@ -95,6 +96,7 @@ cases = [("elasticity", "paper_3d.prm",
            ("Refine through thickness", "false\n  set Contact quadrature rule = lobatto"),
            ("Nitsche gamma0", "60")], [1, 2]),
          ("mindlin", "paper_mindlin_friction.prm", [("Number of cycles", "2")], [1]),
+         ("mindlin9", "paper_mindlin_mitc9.prm", [("Number of cycles", "2")], [1]),
          ("kirchhoff", "paper_kirchhoff.prm", [("Number of cycles", "2")], [1])]
 per_iteration = {("elasticity", 2), ("kirchhoff", 1)}
 

@@ -151,10 +151,20 @@ namespace NitscheContact
     static constexpr unsigned int ubar_component = 3; ///< u_x; u_y = 4
 
     /// Settings of the "Mindlin" subsection.
+    /// Transverse shear of the element (Mindlin/Shear treatment): 'full'
+    /// (plain Q1 shear, locks), MITC4 (Q1, Bathe-Dvorkin) or MITC9 (Q2,
+    /// Bucalem-Bathe tying; doc/mindlin.md).
+    enum class Shear
+    {
+      full,
+      mitc4,
+      mitc9
+    };
+
     struct Settings
     {
       double       shear_factor = 5. / 6.;
-      bool         mitc4        = true;
+      Shear        shear        = Shear::mitc4;
       bool         membrane     = false;
       bool         soft_support = false;
       bool         nitsche_length_is_thickness = true;
@@ -168,9 +178,9 @@ namespace NitscheContact
       bool         check_multigrid  = false;
     };
 
-    /// The assumed (MITC4) or plain transverse shear strain gamma = grad w +
-    /// phi of a shape function, at a point of the unit cell, on an axis-
-    /// aligned hx x hy rectangle. Public so that a unit test can check the
+    /// The assumed (MITC4, MITC9) or plain transverse shear strain gamma =
+    /// grad w + phi of a shape function, at a point of the unit cell, on an
+    /// axis-aligned hx x hy rectangle. Public so that a unit test can check the
     /// element directly.
     static dealii::Tensor<1, 2>
     shear_strain(const dealii::FiniteElement<2> &fe,
@@ -178,7 +188,7 @@ namespace NitscheContact
                  const dealii::Point<2>         &unit_point,
                  double                          hx,
                  double                          hy,
-                 bool                            mitc4);
+                 Shear                           shear);
 
   private:
     void
