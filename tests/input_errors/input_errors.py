@@ -148,6 +148,11 @@ CASES = [
      "set Model = mindlin\nsubsection Mindlin\n  set Linear solver = multigrid\n"
      "  set Shear treatment = MITC9\nend",
      ["Mindlin/Linear solver", "multigrid", "MITC9", "Amesos_Mumps"]),
+    ("MITC9 with 2 contact points per direction",
+     "set Model = mindlin\nsubsection Geometry\n  set Subdivisions = 2, 2\nend\n"
+     "subsection Mindlin\n  set Shear treatment = MITC9\n"
+     "  set Contact quadrature rule = lobatto\n  set Contact quadrature points = 2\nend",
+     ["Mindlin/Contact quadrature points", "'2'", "MITC9", "at least 3"]),
     ("Mindlin multigrid on an odd number of cells",
      "set Model = mindlin\nsubsection Geometry\n  set Subdivisions = 5, 4\nend\n"
      "subsection Mindlin\n  set Linear solver = multigrid\nend",
@@ -236,6 +241,52 @@ CASES = [
     ("degenerate side ratio",
      "subsection Geometry\n  set Length x = 1e20\nend",
      ["Geometry/Length x", "1e+20", "Geometry/Length y", "[1e-6, 1e6]"]),
+    # (branches that the line coverage of session 19 found without a case)
+    ("Length x = 0", "subsection Geometry\n  set Length x = 0\nend",
+     ["Geometry/Length x", "'0'", "> 0"]),
+    ("Length y < 0", "subsection Geometry\n  set Length y = -3\nend",
+     ["Geometry/Length y", "-3", "> 0"]),
+    ("three edge conditions",
+     "subsection Geometry\n  set Edge conditions = clamped, clamped, free\nend",
+     ["Geometry/Edge conditions", "clamped, clamped, free", "four conditions"]),
+    ("one subdivision count", "subsection Geometry\n  set Subdivisions = 8\nend",
+     ["Geometry/Subdivisions", "'8'", "nx, ny"]),
+    ("sphere radius 0",
+     "subsection Obstacle\n  set Type = sphere\n  set Sphere radius = 0\nend",
+     ["Obstacle/Sphere radius", "'0'", "> 0"]),
+    ("sphere centre with two coordinates",
+     "subsection Obstacle\n  set Type = sphere\n  set Sphere center = 5, 5\nend",
+     ["Obstacle/Sphere center", "5, 5", "x, y, z"]),
+    ("empty output directory", "subsection Output\n  set Directory =\nend",
+     ["Output/Directory", "must not be empty"]),
+    ("refinement box with one corner",
+     "subsection Elasticity\n  set Refinement box = 0, 0, 0\nend",
+     ["Refinement box", "0, 0, 0", "two corners"]),
+    ("Mindlin shear correction factor 0",
+     "set Model = mindlin\nsubsection Geometry\n  set Subdivisions = 2, 2\nend\n"
+     "subsection Mindlin\n  set Shear correction factor = 0\nend",
+     ["Mindlin/Shear correction factor", "'0'", "> 0"]),
+    ("Mindlin without membrane unknowns but with friction",
+     "set Model = mindlin\nsubsection Geometry\n  set Subdivisions = 2, 2\nend\n"
+     "subsection Contact\n  set Friction coefficient = 0.2\nend\n"
+     "subsection Mindlin\n  set Membrane unknowns = false\nend",
+     ["Mindlin/Membrane unknowns", "false", "Friction coefficient"]),
+    ("Kirchhoff with friction",
+     "set Model = kirchhoff\nsubsection Geometry\n  set Subdivisions = 2, 2\nend\n"
+     "subsection Contact\n  set Friction coefficient = 0.2\nend",
+     ["Contact/Friction coefficient", "0.2"]),
+    ("Kirchhoff alpha < 0",
+     "set Model = kirchhoff\nsubsection Geometry\n  set Subdivisions = 2, 2\nend\n"
+     "subsection Kirchhoff\n  set Stabilisation alpha = -1e-4\nend",
+     ["Stabilisation alpha", "-1e-4", "pattern"]),
+    ("Kirchhoff kappa < 0",
+     "set Model = kirchhoff\nsubsection Geometry\n  set Subdivisions = 2, 2\nend\n"
+     "subsection Kirchhoff\n  set Obstacle compliance kappa = -1\nend",
+     ["Obstacle compliance kappa", "-1", "pattern"]),
+    ("Kirchhoff exact gradient without an exact solution",
+     "set Model = kirchhoff\nsubsection Geometry\n  set Subdivisions = 2, 2\nend\n"
+     "subsection Kirchhoff\n  set Exact gradient = x; y\nend",
+     ["Kirchhoff/Exact gradient", "x; y", "Exact solution"]),
 ]
 
 # a regular file: a directory below it can never be created (even as root)
