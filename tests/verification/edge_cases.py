@@ -30,6 +30,12 @@ checked against an independent source:
    no point of the cell has the sphere below). Independent check: the
    points with NaN are exactly those outside the sphere's disc, and the
    finite values are bounded by the geometry (gap <= R + |z_c| + t).
+8. 'Nonlinear solver/Damping after' (untested until the coverage run of
+   session 19): on the Mindlin paper test with theta = 0 (no energy, so
+   the damped steps are Armijo backtracking on |R|), 'Damping after = 3'
+   must say "no convergence after 3 full steps: switching to damped steps"
+   and '= 0' damp from the first step; both must reach the solution of the
+   default run (the same discrete problem: probes and reaction to 1e-6).
 """
 import json
 import os
@@ -213,4 +219,46 @@ for model, sub, piece, fields in [("elasticity", "8, 8, 1", "contact-00.0000.vtu
                    >= radius ** 2 for i in range(len(vtu["initial_gap"][0]))]
         nan = [v != v for v in vtu["initial_gap"][0]]
         check(outside == nan, "3D, small sphere: initial_gap NaN exactly outside the disc")
+
+# 8. 'Damping after'
+DAMP = """
+set Model = mindlin
+subsection Geometry
+  set Length x = 10
+  set Length y = 10
+  set Thickness = 0.01
+  set Subdivisions = 8, 8
+end
+subsection Load
+  set Transverse load = -0.02
+end
+subsection Obstacle
+  set Level = -1
+end
+subsection Contact
+  set Nitsche theta = 0
+end
+subsection Nonlinear solver
+  set Tolerance = 1e-8
+  set Maximum iterations = 200
+  set Damping after = %s
+end
+subsection Output
+  set Probe points = 5, 5; 2.5, 5; 1, 5
+end
+"""
+ref, _ = run(args, "damping_default", DAMP % "100000")
+for after in ("3", "0"):
+    s, log = run(args, "damping_after_" + after, DAMP % after)
+    if after == "3":
+        check("no convergence after 3 full steps: switching to damped steps" in log,
+              "Damping after = 3: the log says so")
+    a, b = ref["cycles"][-1], s["cycles"][-1]
+    check(b["converged"], "Damping after = %s: converged (%d iterations, default %d)"
+          % (after, b["nonlinear_iterations"], a["nonlinear_iterations"]))
+    for k in range(3):
+        close(b["probes"][k], a["probes"][k], 1e-6,
+              "Damping after = %s: probe %d as in the default run" % (after, k))
+    close(b["contact_force"], a["contact_force"], 1e-6,
+          "Damping after = %s: reaction as in the default run" % after)
 finish()

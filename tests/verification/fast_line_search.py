@@ -6,7 +6,9 @@ along the step must equal the slope of the residual assembled at U + t dU.
    Gauss-Lobatto contact points with gamma0 = 60 (coercive,
    nitsche_trace_constant), on 1 rank with and without the fast path and on
    2 ranks with it (its sums over the ranks);
- - Kirchhoff GSV, the paper's test from 16^2 to 32^2 cells.
+ - Kirchhoff GSV, the paper's test from 16^2 to 32^2 cells, with its
+   uniform load and with a load varying in x (the fast path's other branch:
+   the load at the quadrature points instead of one constant);
  - 3D elasticity, block on a sphere with local refinement (hanging nodes),
    on 1 and 2 ranks.
 Checks: the first line-search step of the cold start (of cycle 1 for the
@@ -48,6 +50,7 @@ elasticity_changes = [("Number of cycles", "2"), ("Subdivisions", "8, 8, 1"),
                       ("Refine through thickness", "false\n  set Contact quadrature rule = lobatto"),
                       ("Nitsche gamma0", "60")]
 kirchhoff_changes = [("Number of cycles", "2")]
+varying_load = kirchhoff_changes + [("Transverse load", "-0.02 * (1 + 0.5 * sin(x / 3))")]
 # hanging nodes (local refinement) in the 3D model; cycle 1 starts with a
 # line search (found by a review: the constrained rows once entered phi')
 sphere_changes = [("Line search", "true\n  set Nonmonotone window = 0")]
@@ -55,6 +58,7 @@ sphere = os.path.join(here, "..", "runs", "elasticity_sphere.prm")
 
 cases = [("elasticity", "paper_3d.prm", elasticity_changes, 1e-5, [1, 2], 0),
          ("kirchhoff", "paper_kirchhoff.prm", kirchhoff_changes, 1e-8, [1], 0),
+         ("kirchhoff_varying_load", "paper_kirchhoff.prm", varying_load, 1e-8, [1], 0),
          ("sphere", sphere, sphere_changes, 1e-8, [1, 2], 1)]
 
 for tag, prm, changes, rtol, ranks, cycle in cases:
