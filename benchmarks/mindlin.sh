@@ -3,14 +3,17 @@
 # paper_mindlin.prm): DoFs, nonlinear iterations and wall-clock seconds per
 # phase for each refinement cycle, in Release. Usage:
 #   benchmarks/mindlin.sh [path/to/nitsche-contact] [number of cycles] [gauss|lobatto]
-#                         [direct|multigrid] [subdivisions]
+#                         [direct|multigrid] [subdivisions] [mitc4|mitc9]
 # The third argument selects the contact points: 'gauss' (default, 4x4 Gauss
 # as in paper_mindlin.prm) or 'lobatto' (2x2 Gauss-Lobatto = cell vertices;
 # fewer Newton iterations, doc/mindlin.md 4.1). The fourth the linear
 # solver: 'direct' (default, MUMPS) or 'multigrid' (CG with the V-cycle over
 # Kirchhoff coarse levels, doc/mindlin.md 4.2). The fifth the subdivisions
 # of the first mesh per direction (default 8, as the .prm; 10 with 7 cycles
-# gives 640^2 cells = 1,232,643 dofs).
+# gives 640^2 cells = 1,232,643 dofs). The sixth the element: 'mitc4'
+# (default, paper_mindlin.prm) or 'mitc9' (parameters/paper_mindlin_mitc9.prm,
+# biquadratic; 'lobatto' is then 3x3 Gauss-Lobatto = the Q2 nodes, the
+# default subdivisions 4, the same nodes as MITC4 on 8; direct solver only).
 # The program must be built with CMAKE_BUILD_TYPE=Release.
 set -e
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -18,7 +21,12 @@ exe=${1:-$here/build/nitsche-contact}
 cycles=${2:-7}
 rule=${3:-gauss}
 solver=${4:-direct}
-subdivisions=${5:-8}
+element=${6:-mitc4}
+case "$element" in
+  mitc4) prm=paper_mindlin.prm; subdivisions=${5:-8}; vertex_points=2 ;;
+  mitc9) prm=paper_mindlin_mitc9.prm; subdivisions=${5:-4}; vertex_points=3 ;;
+  *) echo "benchmarks/mindlin.sh: element must be 'mitc4' or 'mitc9', not '$element'" >&2; exit 1 ;;
+esac
 case "$solver" in
   direct) solver_line="" ;;
   multigrid) solver_line="\n  set Linear solver = multigrid" ;;
@@ -29,7 +37,7 @@ case "$subdivisions" in
 esac
 case "$rule" in
   gauss) points=4 ;;
-  lobatto) points=2 ;;
+  lobatto) points=$vertex_points ;;
   *) echo "benchmarks/mindlin.sh: contact rule must be 'gauss' or 'lobatto', not '$rule'" >&2; exit 1 ;;
 esac
 work=$(mktemp -d)
@@ -40,7 +48,7 @@ sed -e "s/^\( *set Number of cycles *=\).*/\1 $cycles/" \
     -e "s/^\( *set Print iterations *=\).*/\1 false/" \
     -e "s/^\( *set Subdivisions *=\).*/\1 $subdivisions, $subdivisions/" \
     -e "s/^\( *set Membrane unknowns *=.*\)/\1\n  set Contact quadrature points = $points\n  set Contact quadrature rule = $rule$solver_line/" \
-    "$here/parameters/paper_mindlin.prm" > "$work/bench.prm"
+    "$here/parameters/$prm" > "$work/bench.prm"
 start=$(date +%s.%N)
 if [ -x /usr/bin/time ]; then
   /usr/bin/time -v "$exe" "$work/bench.prm" > "$work/log" 2> "$work/time" ||
