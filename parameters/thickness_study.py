@@ -17,12 +17,13 @@ models are the thickness effects (shear, 3D stresses) plus discretisation.
 (With the plane kept at -1 the mid-plane could only reach -1 + t/2 = -0.5
 at t = 1: a different contact problem for each thickness.)
 
-Each run's .prm is parameters/paper_{3d,mindlin,kirchhoff}.prm with override
+Each run's .prm is parameters/paper_{3d,mindlin,mindlin_mitc9,kirchhoff}.prm with override
 subsections appended (later entries override earlier ones in deal.II's
 ParameterHandler):
   3D        Q2, Subdivisions 8,8,1 (8,8,2 for t >= 0.3), 2 cycles
             (last mesh 16x16x2, resp. 16x16x4)
   Mindlin   MITC4, 8x8, 4 nested cycles (last mesh 64x64)
+  Mindlin   MITC9, 4x4, 4 nested cycles (last mesh 32x32, the same nodes)
   Kirchhoff BFS + GSV, 16x16, 3 nested cycles (last mesh 64x64)
 Contact parameters (theta, gamma0, alpha) are those of the paper_*.prm files.
 A 3D run that exceeds --timeout seconds is dropped (reported in the table).
@@ -44,6 +45,7 @@ PROBES = [(5.0, 5.0), (2.5, 5.0), (1.0, 5.0)]
 MODELS = [
     ("3d", "3D Q2", "paper_3d.prm"),
     ("mindlin", "Mindlin MITC4", "paper_mindlin.prm"),
+    ("mindlin9", "Mindlin MITC9", "paper_mindlin_mitc9.prm"),
     ("kirchhoff", "Kirchhoff GSV", "paper_kirchhoff.prm"),
 ]
 
@@ -65,6 +67,9 @@ def overrides(model, t, outdir):
         text += "  set Number of cycles = 2\n"
     elif model == "mindlin":
         text += "  set Subdivisions = 8, 8\n  set Number of cycles = 4\n"
+    elif model == "mindlin9":
+        # the same nodes as MITC4
+        text += "  set Subdivisions = 4, 4\n  set Number of cycles = 4\n"
     else:
         text += "  set Subdivisions = 16, 16\n  set Number of cycles = 3\n"
     text += "end\n"
@@ -177,14 +182,15 @@ def write_tables(res, out):
     lines.append("")
     lines.append("Relative differences with respect to Kirchhoff:")
     lines.append("")
-    lines.append("| t/a | 3D w(1,5) | Mindlin w(1,5) | 3D reaction | Mindlin reaction "
-                 "| 3D w(2.5,5) | Mindlin w(2.5,5) |")
-    lines.append("|---|---|---|---|---|---|---|")
+    lines.append("| t/a | 3D w(1,5) | MITC4 w(1,5) | MITC9 w(1,5) | 3D reaction "
+                 "| MITC4 reaction | MITC9 reaction | 3D w(2.5,5) | MITC4 w(2.5,5) "
+                 "| MITC9 w(2.5,5) |")
+    lines.append("|---|---|---|---|---|---|---|---|---|---|")
     for t in THICKNESSES:
         k = res[("kirchhoff", t)]
         cells = ["%g" % (t / A)]
         for what in [("probes", 2), ("reaction", None), ("probes", 1)]:
-            for model in ["3d", "mindlin"]:
+            for model in ["3d", "mindlin", "mindlin9"]:
                 r = res[(model, t)]
                 if r["status"] != "ok" or k["status"] != "ok":
                     cells.append("-")
@@ -215,7 +221,8 @@ def plot(res, out):
             ("w(1,5)", lambda r: r["probes"][2]),
             ("reaction", lambda r: r["reaction"])]):
         for model, label, mk in [("3d", "3D Q2 vs Kirchhoff", "o-"),
-                                 ("mindlin", "Mindlin vs Kirchhoff", "s-")]:
+                                 ("mindlin", "Mindlin MITC4 vs Kirchhoff", "s-"),
+                                 ("mindlin9", "Mindlin MITC9 vs Kirchhoff", "^-")]:
             x, y = [], []
             for t in THICKNESSES:
                 r, k = res[(model, t)], res[("kirchhoff", t)]
