@@ -62,17 +62,17 @@ import json, sys
 s = json.load(open(sys.argv[1]))
 print("Mindlin model, paper test (clamped [0,10]^2, t = 0.01, q = -0.02, obstacle -1)")
 print("linear solver: %s" % s["parameters"].get("linear solver", "?"))
-print("%5s %9s %5s %7s %8s %8s %8s %8s %8s %9s" % ("cycle", "dofs", "its", "krylov",
-      "setup", "assembly", "solve", "postproc", "total", "force"))
+print("%5s %9s %5s %7s %8s %8s %8s %8s %8s %9s %10s" % ("cycle", "dofs", "its", "krylov",
+      "setup", "assembly", "solve", "postproc", "total", "force", "w(1,5)"))
 acc = 0.0
 for c in s["cycles"]:
     t = c["wall_times"]
     tot = t["setup"] + t["assembly"] + t["solve"] + t["postprocess"] + t["output"]
     acc += tot
-    print("%5d %9d %5d %7d %8.2f %8.2f %8.2f %8.2f %8.2f %9.6f" % (c["cycle"], c["n_dofs"],
-          c["nonlinear_iterations"], c.get("linear_iterations", 0), t["setup"],
-          t["assembly"], t["solve"],
-          t["postprocess"], tot, c["contact_force"]))
+    print("%5d %9d %5d %7d %8.2f %8.2f %8.2f %8.2f %8.2f %9.6f %10.6f" % (c["cycle"],
+          c["n_dofs"], c["nonlinear_iterations"], c.get("linear_iterations", 0),
+          t["setup"], t["assembly"], t["solve"],
+          t["postprocess"], tot, c["contact_force"], c["probes"][2]))
 print("sum of phases %.1f s, wall clock of the run %.1f s"
       % (acc, float(sys.argv[3]) - float(sys.argv[2])))
 PY
