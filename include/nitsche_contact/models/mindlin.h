@@ -150,7 +150,6 @@ namespace NitscheContact
     static constexpr unsigned int phi_component  = 1; ///< phi_x; phi_y = 2
     static constexpr unsigned int ubar_component = 3; ///< u_x; u_y = 4
 
-    /// Settings of the "Mindlin" subsection.
     /// Transverse shear of the element (Mindlin/Shear treatment): 'full'
     /// (plain Q1 shear, locks), MITC4 (Q1, Bathe-Dvorkin) or MITC9 (Q2,
     /// Bucalem-Bathe tying; doc/mindlin.md).
@@ -161,6 +160,7 @@ namespace NitscheContact
       mitc9
     };
 
+    /// Settings of the "Mindlin" subsection.
     struct Settings
     {
       double       shear_factor = 5. / 6.;
