@@ -223,6 +223,13 @@ main(int argc, char *argv[])
       }
       summary = common.output_directory + "/summary.json";
       ContactDriver driver(common, MPI_COMM_WORLD);
+      // the parameters first (the driver made the directory), so that the
+      // directory of a run that fails later says what was run
+      if (root)
+        {
+          std::ofstream used(common.output_directory + "/used_parameters.prm");
+          prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
+        }
       // invalid input found on the mesh, or out of memory: remove what
       // this run created unless a cycle finished (summary.json)
       const auto remove_created = [&]() {
@@ -275,11 +282,6 @@ main(int argc, char *argv[])
               MPI_Abort(MPI_COMM_WORLD, 3);
             }
           throw;
-        }
-      if (root)
-        {
-          std::ofstream used(common.output_directory + "/used_parameters.prm");
-          prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
         }
     }
   catch (const InputError &e)

@@ -204,6 +204,57 @@ namespace NitscheContact
                      entry + "': " + allowed);
   }
 
+  void
+  declare_entry(ParameterHandler               &prm,
+                const std::string              &name,
+                const std::string              &default_value,
+                const Patterns::PatternBase    &pattern,
+                const std::string              &documentation)
+  {
+    // deal.II's plain-text descriptions: "An integer n such that 0 <= n <=
+    // 12", "A floating point number v such that 0 <= v <= MAX_DOUBLE",
+    // "Any one of a, b", "A boolean value (true or false)"
+    const std::string text =
+      pattern.description(Patterns::PatternBase::Text);
+    std::string       allowed;
+    const auto        such = text.find(" such that ");
+    if (such != std::string::npos)
+      {
+        const std::string kind =
+          text.rfind("An integer", 0) == 0 ? "an integer" : "a number";
+        // "L <= x <= U"
+        const std::string range = text.substr(such + 11);
+        const auto        first = range.find(" <= ");
+        const auto        last  = range.rfind(" <= ");
+        if (first != std::string::npos && last != first)
+          {
+            const std::string low  = range.substr(0, first);
+            const std::string var  = range.substr(first + 4, last - first - 4);
+            const std::string high = range.substr(last + 4);
+            const bool has_low  = low != "-2147483648" && low != "-MAX_DOUBLE";
+            const bool has_high = high != "2147483647" && high != "MAX_DOUBLE";
+            if (has_low && has_high)
+              allowed = kind + " " + low + " <= " + var + " <= " + high;
+            else if (has_low)
+              allowed = kind + " " + var + " >= " + low;
+            else if (has_high)
+              allowed = kind + " " + var + " <= " + high;
+          }
+      }
+    else if (text.rfind("Any one of ", 0) == 0)
+      allowed = "one of " + text.substr(11);
+    else if (text.rfind("A boolean value", 0) == 0)
+      allowed = "true or false";
+    prm.declare_entry(name,
+                      default_value,
+                      pattern,
+                      allowed.empty() ? documentation :
+                                        documentation + " Allowed: " +
+                                          allowed + ".");
+  }
+
+
+
   std::string
   number_to_string(const double x)
   {
@@ -395,7 +446,7 @@ namespace NitscheContact
   void
   CommonParameters::declare(ParameterHandler &prm)
   {
-    prm.declare_entry("Model",
+    declare_entry(prm, "Model",
                       "elasticity",
                       Patterns::Anything(),
                       "Which model solves the problem: 'elasticity' (3D "
@@ -406,14 +457,15 @@ namespace NitscheContact
 
     prm.enter_subsection("Geometry");
     {
-      prm.declare_entry("Length x", "10", Patterns::Double(),
-                        "Plate side along x; the mid-plane is [0,Lx]x[0,Ly].");
-      prm.declare_entry("Length y", "10", Patterns::Double(),
-                        "Plate side along y.");
-      prm.declare_entry("Thickness", "0.01", Patterns::Double(),
-                        "Plate thickness t = 2 epsilon; the 3D body is "
+      declare_entry(prm, "Length x", "10", Patterns::Double(),
+                        "Plate side along x, > 0; the mid-plane is "
+                        "[0,Lx]x[0,Ly].");
+      declare_entry(prm, "Length y", "10", Patterns::Double(),
+                        "Plate side along y, > 0.");
+      declare_entry(prm, "Thickness", "0.01", Patterns::Double(),
+                        "Plate thickness t = 2 epsilon > 0; the 3D body is "
                         "[0,Lx]x[0,Ly]x(-t/2,t/2).");
-      prm.declare_entry(
+      declare_entry(prm,
         "Edge conditions",
         "clamped, clamped, clamped, clamped",
         Patterns::Anything(),
@@ -422,14 +474,14 @@ namespace NitscheContact
         "supported' (deflection zero; hard support for plates; u3=0 on "
         "the face in 3D), 'symmetry' (normal displacement and normal "
         "rotation zero), 'free'.");
-      prm.declare_entry("Subdivisions", "8, 8, 1", Patterns::Anything(),
+      declare_entry(prm, "Subdivisions", "8, 8, 1", Patterns::Anything(),
                         "Cells of the coarse mesh along x, y (and through "
                         "the thickness for the 3D model).");
-      prm.declare_entry("Initial refinement", "0",
+      declare_entry(prm, "Initial refinement", "0",
                         Patterns::Integer(0, 12),
                         "Global refinements of the coarse mesh before the "
                         "first cycle.");
-      prm.declare_entry("Number of cycles", "1", Patterns::Integer(1, 12),
+      declare_entry(prm, "Number of cycles", "1", Patterns::Integer(1, 12),
                         "Refinement cycles; each refines globally once "
                         "(3D model: see 'Elasticity/Refine through "
                         "thickness') and starts the nonlinear solver from "
@@ -439,16 +491,16 @@ namespace NitscheContact
 
     prm.enter_subsection("Material");
     {
-      prm.declare_entry("Young's modulus", "2e5", Patterns::Double(),
+      declare_entry(prm, "Young's modulus", "2e5", Patterns::Double(),
                         "E > 0.");
-      prm.declare_entry("Poisson ratio", "0.3", Patterns::Double(),
+      declare_entry(prm, "Poisson ratio", "0.3", Patterns::Double(),
                         "nu in (-1, 0.5).");
     }
     prm.leave_subsection();
 
     prm.enter_subsection("Load");
     {
-      prm.declare_entry(
+      declare_entry(prm,
         "Transverse load",
         "-0.02",
         Patterns::Anything(),
@@ -456,26 +508,26 @@ namespace NitscheContact
         "(the paper: -0.02). The 3D model applies it as the body force "
         "q/t or as a top-face traction, see 'Elasticity/Load applied "
         "as'.");
-      prm.declare_entry("Function constants", "", Patterns::Anything(),
+      declare_entry(prm, "Function constants", "", Patterns::Anything(),
                         "Constants for the load expression, e.g. 'q0=1'.");
     }
     prm.leave_subsection();
 
     prm.enter_subsection("Obstacle");
     {
-      prm.declare_entry("Type", "plane", Patterns::Anything(),
+      declare_entry(prm, "Type", "plane", Patterns::Anything(),
                         "'plane' (z = Level), 'sphere' (upper cap of the "
                         "sphere with the given center and radius) or "
                         "'function' (z = Height(x,y)).");
-      prm.declare_entry("Level", "-1", Patterns::Double(),
+      declare_entry(prm, "Level", "-1", Patterns::Double(),
                         "Height of the plane obstacle.");
-      prm.declare_entry("Sphere center", "0, 0, -1", Patterns::Anything(),
+      declare_entry(prm, "Sphere center", "0, 0, -1", Patterns::Anything(),
                         "Center of the spherical obstacle 'x, y, z'.");
-      prm.declare_entry("Sphere radius", "1", Patterns::Double(),
+      declare_entry(prm, "Sphere radius", "1", Patterns::Double(),
                         "Radius of the spherical obstacle, > 0.");
-      prm.declare_entry("Height", "-1", Patterns::Anything(),
+      declare_entry(prm, "Height", "-1", Patterns::Anything(),
                         "Obstacle height z(x,y) for Type = function.");
-      prm.declare_entry(
+      declare_entry(prm,
         "Plate obstacle convention",
         "bottom face",
         Patterns::Selection("bottom face|mid-plane"),
@@ -488,10 +540,10 @@ namespace NitscheContact
 
     prm.enter_subsection("Contact");
     {
-      prm.declare_entry("Nitsche theta", "1", Patterns::Anything(),
+      declare_entry(prm, "Nitsche theta", "1", Patterns::Anything(),
                         "Nitsche variant: 1 (symmetric), 0 "
                         "(non-symmetric), -1 (skew-symmetric).");
-      prm.declare_entry(
+      declare_entry(prm,
         "Nitsche gamma0", "20", Patterns::Double(),
         "Dimensionless Nitsche parameter gamma0 > 0; r = gamma0 E / h_n. "
         "theta = 1 needs gamma0 above the trace constant C_n (about 2 for Q1, "
@@ -499,20 +551,20 @@ namespace NitscheContact
         "first contact cell, reported as nitsche_trace_constant, and a "
         "warning when gamma0 <= (1+theta)^2/4 C_n), theta = -1 works for any "
         "gamma0 > 0.");
-      prm.declare_entry("Friction coefficient", "0", Patterns::Double(),
+      declare_entry(prm, "Friction coefficient", "0", Patterns::Double(),
                         "Coulomb coefficient F >= 0 (0: frictionless).");
     }
     prm.leave_subsection();
 
     prm.enter_subsection("Nonlinear solver");
     {
-      prm.declare_entry(
+      declare_entry(prm,
         "Scheme", "newton", Patterns::Selection("newton|fixed point"),
         "'newton': generalized (semismooth) Newton with the full "
         "generalized Jacobian; 'fixed point': the paper's fixed point "
         "(contact status, slip direction and friction threshold frozen "
         "at the previous iterate). Identical for frictionless problems.");
-      prm.declare_entry(
+      declare_entry(prm,
         "Tolerance", "1e-6", Patterns::Double(),
         "Stop when the energy norm (bulk elastic energy) of the Newton "
         "correction at the current iterate is below Tolerance times the "
@@ -525,12 +577,12 @@ namespace NitscheContact
         "vectors replace the energy norms. Without friction, a run whose contact status has "
         "settled while the correction stops decreasing (Tolerance below "
         "the round-off floor) stops early and says so.");
-      prm.declare_entry("Maximum iterations", "300",
+      declare_entry(prm, "Maximum iterations", "300",
                         Patterns::Integer(1, 100000),
                         "Iteration limit per cycle (per stage when a cycle "
                         "is solved in stages: 'Load steps', 'Friction "
                         "steps').");
-      prm.declare_entry(
+      declare_entry(prm,
         "Line search", "true", Patterns::Bool(),
         "Globalisation of the Newton steps. When the formulation has an "
         "energy (theta = 1 and no friction; the Kirchhoff pure penalty for "
@@ -542,21 +594,21 @@ namespace NitscheContact
         "seen before reappears), 'Damping after' iterations or 'Damping "
         "after no decrease' steps without a new minimum of |R|, then "
         "backtracking on the residual norm. false: always full steps.");
-      prm.declare_entry("Allow non-convergence", "false", Patterns::Bool(),
+      declare_entry(prm, "Allow non-convergence", "false", Patterns::Bool(),
                         "If false (default) a run whose nonlinear solver "
                         "does not converge (or stagnates) stops with exit "
                         "status 2; if true it goes on with the next cycle. "
                         "A singular Newton matrix, a failed linear solver "
                         "and values that are not finite stop the run "
                         "either way.");
-      prm.declare_entry(
+      declare_entry(prm,
         "Load steps", "1", Patterns::Integer(1, 10000),
         "On the first cycle, apply the load in this many equal increments, "
         "each solved to convergence starting from the previous one "
         "(continuation). Thin plates pressed far onto an obstacle need a "
         "few; later cycles start from the previous cycle's solution at "
         "full load (nested iteration).");
-      prm.declare_entry(
+      declare_entry(prm,
         "Friction steps", "0", Patterns::Integer(0, 10000),
         "Continuation in the Coulomb coefficient F (only with 'Contact/"
         "Friction coefficient' > 0): 0 solves every cycle with F from its "
@@ -564,14 +616,14 @@ namespace NitscheContact
         "frictionless formulation, whose theta = 1 energy gives the exact "
         "line search) and then with F k/N for k = 1 ... N, each stage "
         "starting from the previous one's solution. Newton with friction "
-        "has no energy to globalise it, and on the paper's 3D plate it "
-        "wanders from a cold or nested start that the frictionless "
-        "iteration handles (doc/design.md). The cycle's iteration count "
+        "has no energy to globalise it; on the paper's 3D plate (with "
+        "'Stick step on slip reversal') N = 1 needs about 2/3 of the "
+        "iterations of N = 0 (doc/design.md). The cycle's iteration count "
         "is the sum over its stages; on the first cycle the load steps "
         "run in the frictionless stage. Not for bodies whose tangential "
         "rigid motion only friction holds (free edges, a block pushed "
         "sideways): the frictionless stage is singular there.");
-      prm.declare_entry(
+      declare_entry(prm,
         "Nonmonotone window", "5", Patterns::Integer(0, 1000),
         "With the exact line search on the energy J (see 'Line search'), on "
         "the cycles after the first (nested iteration) and until the "
@@ -581,17 +633,17 @@ namespace NitscheContact
         "Lucidi); otherwise the exact line search runs. 0: monotone (the "
         "full step only when the slope of J there is small). See "
         "doc/design.md.");
-      prm.declare_entry(
+      declare_entry(prm,
         "Fast line search", "true", Patterns::Bool(),
         "With the exact line search (see 'Line search'): evaluate the slope "
         "of J at the trial steps from point values along the Newton step, "
         "without assembling the residual there, where the model offers it "
         "(elasticity and kirchhoff). false assembles the residual at every "
         "trial step: the reference path, slower, for checking.");
-      prm.declare_entry("Damping after", "100000", Patterns::Integer(0, 100000),
+      declare_entry(prm, "Damping after", "100000", Patterns::Integer(0, 100000),
                         "With 'Line search', damped steps are also used "
                         "from this iteration on (0: always damped).");
-      prm.declare_entry(
+      declare_entry(prm,
         "Damping after no decrease", "20", Patterns::Integer(0, 100000),
         "With 'Line search' and a formulation without energy (theta != 1 "
         "or friction): damped steps are also used once the residual norm "
@@ -599,8 +651,8 @@ namespace NitscheContact
         "in this many consecutive full Newton steps. Full steps with "
         "Coulomb friction can wander without ever repeating a contact "
         "status (paper_mindlin_friction.prm does on its 16x16 cycle with "
-        "0). 0: never.");
-      prm.declare_entry(
+        "0 and 'Stick step on slip reversal = false'). 0: never.");
+      declare_entry(prm,
         "Stick step on slip reversal", "true", Patterns::Bool(),
         "Newton with Coulomb friction (elasticity and mindlin): at a point "
         "that slips at this iterate and was in contact (stick or slip) at "
@@ -613,9 +665,9 @@ namespace NitscheContact
         "The residual, hence the solution and the convergence test, is "
         "that of the law; the log counts these points as 'reversed'. "
         "false: the plain generalized Newton step everywhere.");
-      prm.declare_entry("Print iterations", "true", Patterns::Bool(),
+      declare_entry(prm, "Print iterations", "true", Patterns::Bool(),
                         "One log line per nonlinear iteration.");
-      prm.declare_entry(
+      declare_entry(prm,
         "Reuse factorization", "true", Patterns::Bool(),
         "Sparse direct solvers (MUMPS, KLU): when no contact point changed "
         "status since the last factorisation, do not factorise again. "
@@ -626,7 +678,7 @@ namespace NitscheContact
         "precondition GMRES (reduction 1e-12, at most 10 iterations, else a "
         "new factorisation). false: factorise every Newton matrix. No effect "
         "on the multigrid (Kirchhoff) and AMG (3D) solvers.");
-      prm.declare_entry(
+      declare_entry(prm,
         "Symmetric factorization", "true", Patterns::Bool(),
         "MUMPS: factorise symmetric Newton matrices (theta = 1 without "
         "friction; the Kirchhoff pure penalty) as L D L^T with pivoting, "
@@ -641,26 +693,26 @@ namespace NitscheContact
 
     prm.enter_subsection("Output");
     {
-      prm.declare_entry("Directory", "results", Patterns::Anything(),
+      declare_entry(prm, "Directory", "results", Patterns::Anything(),
                         "Where summary.json, the tables, the profile CSV "
                         "and the VTU/PVD files go (created if missing).");
-      prm.declare_entry("Format", "vtu", Patterns::Selection("vtu|none"),
+      declare_entry(prm, "Format", "vtu", Patterns::Selection("vtu|none"),
                         "Graphical output: 'vtu' (with a .pvd record per "
                         "run) or 'none'.");
-      prm.declare_entry("Print timings", "false", Patterns::Bool(),
+      declare_entry(prm, "Print timings", "false", Patterns::Bool(),
                         "Print the wall-clock time of every phase at the "
                         "end of the run.");
-      prm.declare_entry("Probe points", "centre", Patterns::Anything(),
+      declare_entry(prm, "Probe points", "centre", Patterns::Anything(),
                         "In-plane points 'x, y; x, y; ...' on the plate where "
                         "the deflection (u3 on the mid-plane / w) is "
                         "reported; 'centre' stands for (Lx/2, Ly/2), empty "
                         "for none.");
-      prm.declare_entry("Profile line", "centre line", Patterns::Anything(),
+      declare_entry(prm, "Profile line", "centre line", Patterns::Anything(),
                         "Start and end 'x0, y0; x1, y1' on the plate of the "
                         "line along which the deflection is written to "
                         "profile.csv; 'centre line' stands for (0, Ly/2) to "
                         "(Lx, Ly/2).");
-      prm.declare_entry(
+      declare_entry(prm,
         "Contact points", "false", Patterns::Bool(),
         "Write contact_points-NN.csv per cycle: every contact quadrature "
         "point of the cycle's last (converged) iterate with x, y, the centre of its cell "
@@ -673,7 +725,7 @@ namespace NitscheContact
         "cell; the pressures times the weights sum to the contact force. "
         "One line per point: large for fine meshes (the 1M-DoF Kirchhoff "
         "run has 9.4 million points).");
-      prm.declare_entry(
+      declare_entry(prm,
         "Contact points per iteration", "false", Patterns::Bool(),
         "Also write contact_points-NN-iKKK.csv, in the format of 'Contact "
         "points', at every iterate of the nonlinear solver on cycle NN from "
@@ -688,9 +740,9 @@ namespace NitscheContact
         "('Contact points = true'). For studying how the contact status "
         "settles (parameters/plot_contact_points.py --against); one file "
         "per iteration.");
-      prm.declare_entry("Profile points", "101", Patterns::Integer(2, 100000),
+      declare_entry(prm, "Profile points", "101", Patterns::Integer(2, 100000),
                         "Number of points along the profile line.");
-      prm.declare_entry("Field grid points", "0", Patterns::Integer(0, 2000),
+      declare_entry(prm, "Field grid points", "0", Patterns::Integer(0, 2000),
                         "If > 0 (then at least 2), the deflection of the "
                         "last cycle is sampled on an n x n grid over the "
                         "plate and written to field.csv (for plots).");
@@ -699,12 +751,12 @@ namespace NitscheContact
 
     prm.enter_subsection("Reference solution");
     {
-      prm.declare_entry(
+      declare_entry(prm,
         "Exact solution", "", Patterns::Anything(),
         "Optional exact solution, components separated by ';' (3D: "
         "u1; u2; u3 in x,y,z; Kirchhoff: w in x,y; Mindlin: w; phi_x; "
         "phi_y in x,y). When set, errors and rates are reported.");
-      prm.declare_entry("Function constants", "", Patterns::Anything(),
+      declare_entry(prm, "Function constants", "", Patterns::Anything(),
                         "Constants for the exact solution, e.g. 'p=1'.");
     }
     prm.leave_subsection();
@@ -1001,7 +1053,17 @@ namespace NitscheContact
     // solution; the Nitsche terms would then return a meaningless
     // equilibrium with a huge reaction. The contact surface of the
     // undeformed body is its bottom face x3 = -t/2 (3D model, and the plate
-    // models with the bottom-face convention) or the mid-plane.
+    // models with the bottom-face convention) or the mid-plane. A compliant
+    // obstacle (Kirchhoff model, kappa > 0: an elastic foundation) is
+    // well posed there, and is not checked.
+    double kappa = 0.;
+    if (model == "kirchhoff")
+      {
+        prm.enter_subsection("Kirchhoff");
+        kappa = prm.get_double("Obstacle compliance kappa");
+        prm.leave_subsection();
+      }
+    if (!(kappa > 0.))
     {
       const double surface =
         (model != "elasticity" && obstacle_level_is_midplane) ?

@@ -46,6 +46,18 @@ namespace NitscheContact
                 const std::string &entry,
                 char               separator);
 
+  /// prm.declare_entry() with the values the pattern allows appended to
+  /// the documentation ("Allowed: ..."), so that --print-parameters, which
+  /// prints no patterns, shows the ranges and choices the input check
+  /// enforces (unbounded numbers and free text get no such sentence; their
+  /// documentation states what the later checks allow).
+  void
+  declare_entry(dealii::ParameterHandler             &prm,
+                const std::string                    &name,
+                const std::string                    &default_value,
+                const dealii::Patterns::PatternBase  &pattern,
+                const std::string                    &documentation);
+
   /// A number as the user would write it (shortest stream form), for
   /// messages and logs.
   std::string

@@ -337,51 +337,51 @@ namespace NitscheContact
   {
     prm.enter_subsection("Elasticity");
     {
-      prm.declare_entry(
+      declare_entry(prm,
         "Polynomial degree", "2", Patterns::Integer(1, 2),
         "1: trilinear Q1, 2: triquadratic Q2 hexahedra. For thin plates use "
         "Q2: Q1 locks in bending (its parasitic shear strain grows like "
         "(h/t)^2), Q2 represents the linear-in-x3 bending strain exactly.");
-      prm.declare_entry(
+      declare_entry(prm,
         "Load applied as", "body force",
         Patterns::Selection("body force|top traction"),
         "How the transverse load q of 'Load/Transverse load' enters: the "
         "body force (0,0,q/t) (the paper's f^V) or the traction (0,0,q) "
         "on the top face.");
-      prm.declare_entry("Top tangential traction", "0; 0",
+      declare_entry(prm, "Top tangential traction", "0; 0",
                         Patterns::Anything(),
                         "Tangential traction 'tx; ty' on the top face, "
                         "functions of x,y (e.g. for friction tests).");
-      prm.declare_entry("Top face", "free", Patterns::Selection("free|clamped"),
+      declare_entry(prm, "Top face", "free", Patterns::Selection("free|clamped"),
                         "'clamped' fixes the top face (u = 0), e.g. to "
                         "press an obstacle into a block (Hertz test).");
-      prm.declare_entry(
+      declare_entry(prm,
         "Linear solver", "direct", Patterns::Selection("direct|amg"),
         "'direct': MUMPS through Trilinos/Amesos (robust, moderate sizes); "
         "'amg': GMRES preconditioned by Trilinos ML AMG (large thick "
         "bodies; it does not converge on thin plates such as the paper's, "
         "which stops the run with that message).");
-      prm.declare_entry("Krylov tolerance", "1e-10", Patterns::Double(0),
+      declare_entry(prm, "Krylov tolerance", "1e-10", Patterns::Double(),
                         "Relative residual tolerance of the AMG-GMRES "
                         "solver, in (0, 1).");
-      prm.declare_entry(
+      declare_entry(prm,
         "Refinement box", "", Patterns::Anything(),
         "Optional box 'x0, y0, z0; x1, y1, z1': cells whose centre lies in "
         "it are refined 'Local refinement steps' extra times on the first "
         "cycle (hanging nodes are handled by constraints).");
-      prm.declare_entry(
+      declare_entry(prm,
         "Contact quadrature points", "0", Patterns::Integer(0, 12),
         "Points per direction on contact faces (of the 'Contact quadrature "
         "rule'); 0 selects degree + 3 "
         "(the integrand has kinks inside faces where the contact status "
         "changes).");
-      prm.declare_entry("Contact quadrature rule", "gauss",
+      declare_entry(prm, "Contact quadrature rule", "gauss",
                         Patterns::Selection("gauss|lobatto"),
                         contact_rule_help);
-      prm.declare_entry("Local refinement steps", "0",
+      declare_entry(prm, "Local refinement steps", "0",
                         Patterns::Integer(0, 10),
                         "Extra refinements inside 'Refinement box'.");
-      prm.declare_entry(
+      declare_entry(prm,
         "Refine through thickness", "true", Patterns::Bool(),
         "How each cycle refines the mesh. true: every cell is split in all "
         "three directions, so the layers through the thickness double too "
@@ -1618,9 +1618,14 @@ namespace NitscheContact
         throw ConvergenceFailure(
           "the accepted iterate is not an equilibrium (|R| / |A U| = " +
           std::to_string(relative_residual) +
-          " > 1e-4): the nonlinear solver did not find a solution; a rigid "
-          "motion may be unrestrained (e.g. the tangential load exceeds the "
-          "friction limit F * normal force)");
+          " > 1e-4): the nonlinear solver's stopping test (a correction "
+          "below 'Nonlinear solver/Tolerance' on a settled contact status) "
+          "passed without a solution. Either a rigid motion is restrained "
+          "by contact alone and is not held (e.g. the tangential load "
+          "exceeds the friction limit F * normal force), or, with friction, "
+          "the Newton path stalled on damped steps (the paper's 3D plate "
+          "does so with 'Stick step on slip reversal = false'; keep it "
+          "true, or try 'Friction steps')");
     }
     ghosted = solution;
 
@@ -1635,8 +1640,9 @@ namespace NitscheContact
     std::vector<std::vector<Tensor<1, 3>>> u_grads(
       face_quadrature.size(), std::vector<Tensor<1, 3>>(3));
     double area = 0., force = 0., stick_area = 0., slip_area = 0.,
-           max_pressure = 0., max_penetration = -1e300, max_ratio = 0.;
-    Tensor<1, 3> tangential_force;
+           max_pressure = 0., max_penetration = -1e300, max_ratio = 0.,
+           tangential_force = 0.;
+    Tensor<1, 3> tangential_resultant;
     for_each_contact_face(
       fvf,
       [&](const DoFHandler<3>::active_cell_iterator &/*cell*/,
@@ -1661,12 +1667,16 @@ namespace NitscheContact
                   slip_area += JxW;
                 else
                   stick_area += JxW;
-                max_ratio = std::max(max_ratio,
-                                     st.lambda_t.norm() / -st.lambda_n);
+                if (prm.friction > 0.)
+                  max_ratio =
+                    std::max(max_ratio,
+                             st.lambda_t.norm() / (prm.friction * -st.lambda_n));
               }
             // the obstacle acts on the body with the traction
-            // Lambda_n n + Lambda_t
-            tangential_force += st.lambda_t * JxW;
+            // Lambda_n n + Lambda_t (the same keys and signs as the
+            // Mindlin model's)
+            tangential_force += st.lambda_t.norm() * JxW;
+            tangential_resultant += st.lambda_t * JxW;
           }
       });
     res.contact_area  = Utilities::MPI::sum(area, comm);
@@ -1690,15 +1700,23 @@ namespace NitscheContact
     res.extra = {
       {"max_contact_pressure", Utilities::MPI::max(max_pressure, comm)},
       {"max_penetration", Utilities::MPI::max(max_penetration, comm)},
-      {"stick_area", Utilities::MPI::sum(stick_area, comm)},
-      {"slip_area", Utilities::MPI::sum(slip_area, comm)},
-      {"tangential_force_x",
-       -Utilities::MPI::sum(tangential_force[0], comm)},
-      {"tangential_force_y",
-       -Utilities::MPI::sum(tangential_force[1], comm)},
-      {"max_friction_ratio", Utilities::MPI::max(max_ratio, comm)},
       {"nitsche_trace_constant", trace_constant_value},
       {"relative_residual", relative_residual}};
+    // (collective sums: every rank has the same prm.friction)
+    if (prm.friction > 0.)
+      {
+        const auto add = [&](const char *key, const double value) {
+          res.extra.emplace_back(key, value);
+        };
+        add("stick_area", Utilities::MPI::sum(stick_area, comm));
+        add("slip_area", Utilities::MPI::sum(slip_area, comm));
+        add("tangential_force", Utilities::MPI::sum(tangential_force, comm));
+        add("tangential_resultant_x",
+            Utilities::MPI::sum(tangential_resultant[0], comm));
+        add("tangential_resultant_y",
+            Utilities::MPI::sum(tangential_resultant[1], comm));
+        add("max_friction_ratio", Utilities::MPI::max(max_ratio, comm));
+      }
     direct_solver.report_inertia(res.extra);
 
     if (exact_solution)

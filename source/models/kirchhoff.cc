@@ -63,7 +63,7 @@ namespace NitscheContact
   {
     prm.enter_subsection("Kirchhoff");
     {
-      prm.declare_entry(
+      declare_entry(prm,
         "Contact formulation",
         "gsv",
         Patterns::Selection("gsv|nitsche"),
@@ -75,7 +75,7 @@ namespace NitscheContact
         "bottom face, doc/theory.md 4.7): sigma_n = lambda (t/2) Delta w, r = "
         "gamma0 E / t with 'Contact/Nitsche gamma0' (theta = 1 needs gamma0 "
         "> about 1.4).");
-      prm.declare_entry(
+      declare_entry(prm,
         "Stabilisation alpha",
         "1e-4",
         Patterns::Double(0.),
@@ -87,7 +87,7 @@ namespace NitscheContact
         "bound: the program computes it for its cells and warns). 0 gives the pure penalty method p = [psi - "
         "w]_+ / kappa (then kappa must be > 0). Ignored by the 'nitsche' "
         "formulation.");
-      prm.declare_entry(
+      declare_entry(prm,
         "Obstacle compliance kappa",
         "0",
         Patterns::Double(0.),
@@ -95,14 +95,14 @@ namespace NitscheContact
         "contact law is p >= 0, w - psi + kappa p >= 0, complementarity. 0: "
         "rigid obstacle (pure Nitsche). Implemented as the factor 1/(1 + "
         "kappa r) on the Nitsche contact stress.");
-      prm.declare_entry(
+      declare_entry(prm,
         "Quadrature points",
         "6",
         Patterns::Integer(4, 12),
         "Gauss points per direction on each cell for the contact terms, the "
-        "load and the errors (the bending form is exact from 4 on; the "
+        "load and the errors (the bending form needs 4, which is exact; the "
         "contact integrand has kinks, 6 is recommended).");
-      prm.declare_entry(
+      declare_entry(prm,
         "Exact gradient",
         "",
         Patterns::Anything(),
@@ -110,19 +110,19 @@ namespace NitscheContact
         "constants of 'Reference solution/Function constants'). If empty, "
         "the H1 error uses fourth-order central differences of 'Reference "
         "solution/Exact solution' with step 1e-3 max(Lx, Ly).");
-      prm.declare_entry(
+      declare_entry(prm,
         "Exact Hessian",
         "",
         Patterns::Anything(),
         "Optional 'w_xx; w_xy; w_yy' of the exact solution. If empty, the H2 "
         "error uses fourth-order central differences of 'Reference "
         "solution/Exact solution' with step 1e-3 max(Lx, Ly).");
-      prm.declare_entry("Direct solver",
+      declare_entry(prm, "Direct solver",
                         "Amesos_Mumps",
                         Patterns::Selection("Amesos_Mumps|Amesos_Klu"),
                         "Trilinos Amesos sparse direct solver (with 'Linear "
                         "solver = direct').");
-      prm.declare_entry(
+      declare_entry(prm,
         "Linear solver",
         "direct",
         Patterns::Selection("direct|multigrid"),
@@ -142,10 +142,10 @@ namespace NitscheContact
         "'nitsche'); with the pure penalty (alpha = 0) a compliance kappa "
         "far below h^4/D makes the contact stiffness dominate and the "
         "Krylov iteration slow.");
-      prm.declare_entry(
+      declare_entry(prm,
         "Krylov tolerance",
         "1e-9",
-        Patterns::Double(0.),
+        Patterns::Double(),
         "'Linear solver = multigrid': the smallest relative residual (to "
         "the norm of the right-hand side) at which the Krylov iteration "
         "stops. While contact points still change status the step is only a "
@@ -158,7 +158,7 @@ namespace NitscheContact
         "Newton tolerance and dU_prev the previous Newton correction (this "
         "value if there is none): meant to leave an error of about a tenth "
         "of what the Newton test accepts. Must be in (0, 1).");
-      prm.declare_entry(
+      declare_entry(prm,
         "Check multigrid",
         "false",
         Patterns::Bool(),

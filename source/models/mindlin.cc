@@ -117,11 +117,11 @@ namespace NitscheContact
   {
     prm.enter_subsection("Mindlin");
     {
-      prm.declare_entry("Shear correction factor", "0.8333333333333334",
+      declare_entry(prm, "Shear correction factor", "0.8333333333333334",
                         Patterns::Double(),
                         "kappa_s in the shear energy kappa_s mu t |gamma|^2; "
                         "5/6 for a homogeneous plate. > 0.");
-      prm.declare_entry(
+      declare_entry(prm,
         "Shear treatment", "MITC4", Patterns::Selection("MITC4|MITC9|full"),
         "The element and its transverse shear. 'MITC4': bilinear (Q1) "
         "unknowns, Bathe-Dvorkin assumed shear (tying at the edge "
@@ -137,19 +137,19 @@ namespace NitscheContact
         "test, doc/mindlin.md 6). 'full': "
         "plain Q1 shear gamma = grad w + phi with 2x2 Gauss points (locks "
         "for thin plates; for demonstration).");
-      prm.declare_entry(
+      declare_entry(prm,
         "Membrane unknowns", "auto", Patterns::Selection("auto|true|false"),
         "Whether the membrane displacements (u_x, u_y) are unknowns: "
         "'auto' = only when 'Contact/Friction coefficient' > 0 (they "
         "decouple from bending otherwise). 'false' is not allowed with "
         "friction.");
-      prm.declare_entry(
+      declare_entry(prm,
         "Simple support", "hard", Patterns::Selection("hard|soft"),
         "Meaning of 'simply supported' edges: 'hard' = w = 0 and tangential "
         "rotation = 0; 'soft' = w = 0 only (the plate has a boundary "
         "layer). The membrane displacements of a simply supported edge are "
         "fixed (immovable hinge).");
-      prm.declare_entry(
+      declare_entry(prm,
         "Nitsche length", "thickness",
         Patterns::Selection("thickness|cell size"),
         "h_n in r = gamma0 E / h_n: 'thickness' (default; theta = 1 is then "
@@ -158,15 +158,15 @@ namespace NitscheContact
         "for MITC9 the side of the Q2 cell, twice its node spacing, so "
         "on the same nodes r is half that of MITC4 and the theta-term bias "
         "twice as large).");
-      prm.declare_entry("Contact quadrature points", "4",
+      declare_entry(prm, "Contact quadrature points", "4",
                         Patterns::Integer(2, 12),
                         "Points per direction and cell for the contact "
                         "integrals (the integrand has kinks inside cells); "
                         "4 or more recommended for 'gauss'.");
-      prm.declare_entry("Contact quadrature rule", "gauss",
+      declare_entry(prm, "Contact quadrature rule", "gauss",
                         Patterns::Selection("gauss|lobatto"),
                         contact_rule_help);
-      prm.declare_entry(
+      declare_entry(prm,
         "Linear solver",
         "Amesos_Mumps",
         Patterns::Selection("Amesos_Mumps|Amesos_Klu|multigrid"),
@@ -182,16 +182,16 @@ namespace NitscheContact
         "unknowns, meshes with an even number of cells per direction. "
         "Memory and time grow linearly with the number of dofs; the direct "
         "solvers are faster below about 50,000 dofs.");
-      prm.declare_entry(
+      declare_entry(prm,
         "Krylov tolerance",
         "1e-9",
-        Patterns::Double(0.),
+        Patterns::Double(),
         "'Linear solver = multigrid': the smallest relative residual at "
         "which the Krylov iteration stops; as for 'Kirchhoff/Krylov "
         "tolerance' (inexact Newton: max(1e-6, this value) while contact "
         "points change status, min(1e-6, max(this value, 0.1 tol "
         "|U|_a / |dU_prev|_a)) on a settled status). Must be in (0, 1).");
-      prm.declare_entry(
+      declare_entry(prm,
         "Check multigrid",
         "false",
         Patterns::Bool(),
@@ -1645,10 +1645,10 @@ namespace NitscheContact
     res.extra.emplace_back("max_bottom_inplane_displacement_in_contact",
                            max_contact_slip);
     res.extra.emplace_back("max_membrane_displacement", max_membrane);
-    res.extra.emplace_back("stick_points", n_stick);
-    res.extra.emplace_back("slip_points", n_slip);
     if (friction > 0.)
       {
+        res.extra.emplace_back("stick_points", n_stick);
+        res.extra.emplace_back("slip_points", n_slip);
         res.extra.emplace_back("tangential_force", tangential_force);
         res.extra.emplace_back("tangential_resultant_x",
                                tangential_resultant[0]);

@@ -85,12 +85,12 @@ for record, text in zip(summary["cycles"], cycle_logs):
                     for s, n in enumerate(counts) for k in range(n))
     check(files == wanted, what + ": %d per-iteration files named per stage" % len(files))
     check(record["slip_points"] > 0 and
-          extra_data["max_friction_ratio"] <= F * (1 + 1e-9) and
-          extra_data["max_friction_ratio"] >= F * (1 - 1e-6),
-          what + ": max |Lambda_t|/|Lambda_n| = %.10g <= F = %g, reached at the %d "
-          "slipping points" % (extra_data["max_friction_ratio"], F, record["slip_points"]))
-    resultant = (extra_data["tangential_force_x"] ** 2 +
-                 extra_data["tangential_force_y"] ** 2) ** 0.5
+          extra_data["max_friction_ratio"] <= 1 + 1e-9 and
+          extra_data["max_friction_ratio"] >= 1 - 1e-6,
+          what + ": max |Lambda_t|/(F |Lambda_n|) = %.10g <= 1 (F = %g), reached at "
+          "the %d slipping points" % (extra_data["max_friction_ratio"], F, record["slip_points"]))
+    resultant = (extra_data["tangential_resultant_x"] ** 2 +
+                 extra_data["tangential_resultant_y"] ** 2) ** 0.5
     check(resultant <= 1e-6 * record["contact_force"],
           what + ": tangential resultant %.3g <= 1e-6 x reaction %.6g (symmetry)"
           % (resultant, record["contact_force"]))
