@@ -1187,14 +1187,22 @@ namespace NitscheContact
   std::string
   theta_bending_bias_warning(const CommonParameters &prm,
                              const double            h_n,
-                             const std::string      &model)
+                             const std::string      &model,
+                             const double            shear_factor)
   {
     const double nu       = prm.poisson_ratio;
     const double lambda_E = prm.lambda() / prm.youngs_modulus;
     const double factor   = 3. * (1. - nu * nu) * lambda_E * lambda_E *
                           (h_n / prm.thickness);
     const double c_D      = factor / prm.gamma0;
-    if (prm.theta == 0. || c_D <= 0.01)
+    // the tangential term's relative change of the shear stiffness, times
+    // gamma0 (mu / E = 1 / (2 (1 + nu)))
+    const double shear_factor_g =
+      shear_factor > 0. ?
+        h_n / (2. * (1. + nu) * shear_factor * prm.thickness) :
+        0.;
+    const double c_s = shear_factor_g / prm.gamma0;
+    if (prm.theta == 0. || (c_D <= 0.01 && c_s <= 0.01))
       return "";
     std::ostringstream o;
     o << std::setprecision(3) << "  warning: with 'Contact/Nitsche theta' = "
@@ -1204,12 +1212,19 @@ namespace NitscheContact
          "(tr k)^2 bending stiffness by "
       << -prm.theta * 100. * c_D
       << " % (c/D = 3(1-nu^2)(lambda/E)^2 (h_n/t)/gamma0 = " << c_D
-      << ", h_n = " << h_n << "): the result is that of a different plate";
+      << ", h_n = " << h_n << ")";
+    if (shear_factor > 0.)
+      o << ", and with friction the tangential theta-term changes its "
+           "shear stiffness by "
+        << -prm.theta * 100. * c_s
+        << " % (c_s = mu h_n / (kappa_s gamma0 E t) = " << c_s << ")";
+    o << ": the result is that of a different plate";
     if (prm.theta == 1. && c_D >= (1. + nu) / 2.)
       o << ", and with c/D >= (1+nu)/2 = " << (1. + nu) / 2.
         << " its bending form need not be coercive (the bound for any "
            "edges; clamped edges allow c/D < 1, doc/mindlin.md section 1)";
-    o << ". For a change below 1 % use gamma0 >= " << factor / 0.01
+    o << ". For a change below 1 % use gamma0 >= "
+      << std::max(factor, shear_factor_g) / 0.01
       << ", or theta = 0 (consistent, no energy for the line search; "
          "doc/mindlin.md section 2).";
     return o.str();

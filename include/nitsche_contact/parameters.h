@@ -322,11 +322,16 @@ namespace NitscheContact
   /// (lambda/E)^2 (h_n/t) / gamma0 (r = gamma0 E / h_n; doc/mindlin.md
   /// section 2). Returns a warning line when |theta| c/D exceeds 1 % (with
   /// theta = 1 and c >= D (1 + nu)/2 it adds that coercivity is not
-  /// guaranteed), otherwise an empty string.
+  /// guaranteed), otherwise an empty string. With friction the Mindlin
+  /// plate also has the tangential theta-term -(theta/r) sigma_t
+  /// sigma_t(v), sigma_t = -mu gamma, which changes its shear stiffness
+  /// kappa_s mu t by -theta c_s, c_s = mu h_n / (kappa_s gamma0 E t):
+  /// pass shear_factor = kappa_s > 0 to include it (in the 1 % test too).
   std::string
   theta_bending_bias_warning(const CommonParameters &prm,
                              double                  h_n,
-                             const std::string      &model);
+                             const std::string      &model,
+                             double                  shear_factor = 0.);
 } // namespace NitscheContact
 
 #endif

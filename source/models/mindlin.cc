@@ -428,7 +428,9 @@ namespace NitscheContact
     r = prm.gamma0 * prm.youngs_modulus / h_n;
     {
       const std::string w =
-        theta_bending_bias_warning(prm, h_n, "Mindlin plate");
+        theta_bending_bias_warning(prm, h_n, "Mindlin plate",
+                                   prm.friction > 0. ? settings.shear_factor :
+                                                       0.);
       if (!w.empty() && w != bias_warning)
         std::cout << w << std::endl;
       bias_warning = w;

@@ -113,6 +113,12 @@ def bias_case(text, entries):
     return text
 
 
+# With friction the Mindlin plate's tangential theta-term -(theta/r) sigma_t
+# sigma_t(v), sigma_t = -mu gamma, changes its shear stiffness kappa_s mu t by
+# -theta c_s, c_s = mu h_n / (kappa_s gamma0 E t) = h_n / (2 (1+nu) kappa_s
+# gamma0 t) (kappa_s = 5/6): 2.31 % with gamma0 = 20.
+mindlin_friction = open(os.path.join(here, "..", "..", "parameters",
+                                     "paper_mindlin_friction.prm")).read()
 t = 0.01
 for tag, text, theta, gamma0, h_n in [
         ("mindlin_g20", mindlin, 1, 20, t), ("mindlin_g200", mindlin, 1, 200, t),
@@ -120,6 +126,8 @@ for tag, text, theta, gamma0, h_n in [
         ("mindlin_cell_size_g200", mindlin.replace(
             "subsection Mindlin", "subsection Mindlin\n  set Nitsche length = cell size"),
          1, 200, 10. / 8),
+        ("mindlin_friction_g20", mindlin_friction, 1, 20, t),
+        ("mindlin_friction_theta-1_g200", mindlin_friction, -1, 200, t),
         ("kirchhoff_nitsche_g20", open(os.path.join(here, "..", "..", "parameters",
                                                     "kirchhoff_nitsche.prm")).read(), 1, 20, t)]:
     s, out = run(args, "bias_" + tag,
@@ -130,6 +138,14 @@ for tag, text, theta, gamma0, h_n in [
     change = -theta * 100 * factor * (h_n / t) / gamma0
     expect = abs(change) > 1
     text = "bending stiffness by %.3g %%" % change
+    if "friction" in tag:
+        shear = -theta * 100 * (h_n / t) / (2 * (1 + nu) * (5 / 6) * gamma0)
+        expect = expect or abs(shear) > 1
+        shear_text = "shear stiffness by %.3g %%" % shear
+        check((shear_text in out) == expect,
+              "%s: theta = %d, gamma0 = %g: %s" % (tag, theta, gamma0,
+                                                  "warned, '" + shear_text + "'" if expect
+                                                  else "no warning"))
     check((text in out) == expect and ("theta-terms" in out) == expect,
           "%s: theta = %d, gamma0 = %g: %s" % (tag, theta, gamma0,
                                               "warned, '" + text + "'" if expect else "no warning"))
