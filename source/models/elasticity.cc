@@ -719,6 +719,7 @@ namespace NitscheContact
       VectorTools::interpolate_boundary_values(mapping, dof_handler, 5,
                                                Functions::ZeroFunction<3>(3),
                                                constraints);
+    pin_in_plane_rigid_motions();
     constraints.close();
 
     DynamicSparsityPattern dsp(locally_relevant);
@@ -741,6 +742,86 @@ namespace NitscheContact
     step_correction.reinit(locally_owned, comm);
     previous_status.clear();
     previous_q.clear();
+  }
+
+  void
+  ElasticityModel::pin_in_plane_rigid_motions()
+  {
+    pinned_modes = {{false, false, false}};
+    if (prm.friction > 0. || top_clamped)
+      return;
+    bool x_symmetry = false, y_symmetry = false;
+    for (unsigned int e = 0; e < 4; ++e)
+      if (prm.edges[e] == EdgeCondition::clamped)
+        return;
+      else if (prm.edges[e] == EdgeCondition::symmetry)
+        (e < 2 ? x_symmetry : y_symmetry) = true;
+    // a symmetry face x = const (u1 = 0 on it) holds the translation along
+    // x1 and the rotation, one y = const the translation along x2 and the
+    // rotation
+    pinned_modes = {{!x_symmetry, !y_symmetry, !x_symmetry && !y_symmetry}};
+    if (!pinned_modes[0] && !pinned_modes[1])
+      return;
+
+    // The unconstrained locally owned dof of the given component whose
+    // support point is nearest to 'target' (ties: the smallest index),
+    // the same on every rank, and its support point.
+    const Quadrature<3> support(fe.get_unit_support_points());
+    FEValues<3>         fv(mapping, fe, support, update_quadrature_points);
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    const auto nearest = [&](const unsigned int component,
+                             const Point<3>    &target) {
+      double                  best = std::numeric_limits<double>::max();
+      types::global_dof_index index =
+        std::numeric_limits<types::global_dof_index>::max();
+      Point<3> where;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fv.reinit(cell);
+            cell->get_dof_indices(dofs);
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              if (fe.system_to_component_index(i).first == component &&
+                  locally_owned.is_element(dofs[i]) &&
+                  !constraints.is_constrained(dofs[i]))
+                {
+                  const double d = fv.quadrature_point(i).distance(target);
+                  if (d < best || (d == best && dofs[i] < index))
+                    {
+                      best  = d;
+                      index = dofs[i];
+                      where = fv.quadrature_point(i);
+                    }
+                }
+          }
+      const double global_best = Utilities::MPI::min(best, comm);
+      const types::global_dof_index global_index = Utilities::MPI::min(
+        best == global_best ? index :
+                              std::numeric_limits<types::global_dof_index>::max(),
+        comm);
+      AssertThrow(global_index != std::numeric_limits<types::global_dof_index>::max(),
+                  ExcMessage("no unconstrained dof to hold an in-plane rigid "
+                             "motion"));
+      // its y coordinate, from the owner
+      const double y = Utilities::MPI::min(
+        index == global_index ? where[1] : std::numeric_limits<double>::max(),
+        comm);
+      if (locally_relevant.is_element(global_index))
+        constraints.add_line(global_index);
+      return y;
+    };
+    const Point<3> centre(prm.length_x / 2, prm.length_y / 2, 0.);
+    double         y_centre = centre[1];
+    if (pinned_modes[0])
+      y_centre = nearest(0, centre);
+    if (pinned_modes[1])
+      nearest(1, centre);
+    // u1 at a point as far from the first u1 pin in x2 as the plate allows
+    if (pinned_modes[2])
+      nearest(0,
+              Point<3>(prm.length_x / 2,
+                       y_centre < prm.length_y / 2 ? prm.length_y : 0.,
+                       0.));
   }
 
   template <typename FaceWork>
@@ -782,6 +863,9 @@ namespace NitscheContact
       comp[i] = fe.system_to_component_index(i).first;
     std::vector<Tensor<1, 3>> grads(n);
     Vector<double>            traction(2);
+    // in-plane resultant, moment about x3 (through the plate centre) and
+    // their scale, of the top tangential traction
+    double in_plane[4] = {0., 0., 0., 0.};
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -837,6 +921,16 @@ namespace NitscheContact
                                          load_as_traction ?
                                            load_function->value(p) :
                                            0.};
+                    {
+                      const double dx = x[0] - prm.length_x / 2,
+                                   dy = x[1] - prm.length_y / 2,
+                                   JxW = fvf.JxW(q);
+                      in_plane[0] += t[0] * JxW;
+                      in_plane[1] += t[1] * JxW;
+                      in_plane[2] += (dx * t[1] - dy * t[0]) * JxW;
+                      in_plane[3] += (std::abs(t[0]) + std::abs(t[1])) *
+                                     (1. + std::abs(dx) + std::abs(dy)) * JxW;
+                    }
                     for (unsigned int i = 0; i < n; ++i)
                       cell_rhs(i) +=
                         t[comp[i]] * fvf.shape_value(i, q) * fvf.JxW(q);
@@ -848,6 +942,28 @@ namespace NitscheContact
         }
     bulk_matrix.compress(VectorOperation::add);
     load.compress(VectorOperation::add);
+    // A held in-plane rigid motion (pin_in_plane_rigid_motions()) must not
+    // be loaded: frictionless contact cannot balance the load then, and
+    // the pins would carry it silently.
+    if (pinned_modes[0] || pinned_modes[1])
+      {
+        Utilities::MPI::sum(ArrayView<const double>(in_plane, 4), comm,
+                            ArrayView<double>(in_plane, 4));
+        const char *const names[3] = {"x1 component", "x2 component",
+                                      "moment about x3"};
+        for (unsigned int m = 0; m < 3; ++m)
+          if (pinned_modes[m] &&
+              std::abs(in_plane[m]) > 1e-10 * in_plane[3])
+            bad_value("Elasticity/Top tangential traction",
+                      tangential_traction,
+                      "without friction, and with edge conditions that do "
+                      "not hold the plate in its plane, the traction must "
+                      "have no resultant and no moment about x3; its " +
+                        std::string(names[m]) + " is " +
+                        number_to_string(in_plane[m]) +
+                        " (clamp or use symmetry on an edge, or set "
+                        "'Contact/Friction coefficient' > 0)");
+      }
     assemble_theta_matrix();
   }
 

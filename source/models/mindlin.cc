@@ -1519,6 +1519,40 @@ namespace NitscheContact
     std::vector<types::global_dof_index> dofs(n);
     Vector<double> u(n);
 
+    // Equilibrium check of the accepted iterate (as the 3D model's): the
+    // stopping test on the energy norm of the correction, relative to |U|,
+    // passes when |U| is dominated by a rigid motion (a free plate lifted
+    // far by the obstacle) while the deformation is still wrong.
+    // `residual` holds -R(U) of the driver's final assemble(); compare it
+    // with the internal force A U (condensed) and the load.
+    double relative_residual = 0.;
+    {
+      Vector<double> internal(solution.size()), cell_force(n);
+      for (const auto &cell : cell_grid)
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < n; ++i)
+            u(i) = solution(dofs[i]);
+          bulk_cell_matrix.vmult(cell_force, u);
+          for (unsigned int i = 0; i < n; ++i)
+            internal(dofs[i]) += cell_force(i);
+        }
+      constraints.set_zero(internal);
+      const double scale = std::max(internal.l2_norm(),
+                                    std::abs(load_factor) * load.l2_norm());
+      relative_residual = scale > 0. ? residual.l2_norm() / scale : 0.;
+      if (!(relative_residual <= 1e-4) && !prm.allow_non_convergence)
+        throw ConvergenceFailure(
+          "the accepted iterate is not an equilibrium (|R| / |A U| = " +
+          number_to_string(relative_residual) +
+          " > 1e-4): the nonlinear solver's stopping test (a correction "
+          "below 'Nonlinear solver/Tolerance' relative to |U| on a settled "
+          "contact status) passed without a solution; most often |U| is "
+          "dominated by a large rigid motion (a free plate lifted far by "
+          "the obstacle): lower 'Nonlinear solver/Tolerance' or support an "
+          "edge");
+    }
+
     double area = 0., force = 0., tangential_force = 0.;
     Tensor<1, 3> tangential_resultant;
     double max_ratio = 0., max_slip = 0., max_membrane = 0.,
@@ -1642,6 +1676,7 @@ namespace NitscheContact
         res.errors.emplace_back("H1(phi)", std::sqrt(err_phi_h1));
       }
     res.extra.emplace_back("nitsche_r", r);
+    res.extra.emplace_back("relative_residual", relative_residual);
     direct_solver.report_inertia(res.extra);
     res.extra.emplace_back("max_bottom_inplane_displacement", max_slip);
     res.extra.emplace_back("max_bottom_inplane_displacement_in_contact",

@@ -81,6 +81,11 @@ CASES = [
      "set Model = mindlin\nsubsection Mindlin\n  set Linear solver = multigrid\n"
      "  set Krylov tolerance = 0\nend",
      ["Mindlin/Krylov tolerance", "'0'", "(0, 1)"]),
+    ("elasticity tangential traction on a plate free in its plane",
+     "subsection Geometry\n  set Edge conditions = free, free, free, free\nend\n"
+     "subsection Obstacle\n  set Level = 0.5\nend\n"
+     "subsection Elasticity\n  set Top tangential traction = 0.001; 0\nend",
+     ["Elasticity/Top tangential traction", "'0.001; 0'", "no resultant", "x1 component"]),
     ("elasticity Krylov tolerance = 0",
      "subsection Elasticity\n  set Linear solver = amg\n  set Krylov tolerance = 0\nend",
      ["Elasticity/Krylov tolerance", "'0'", "(0, 1)"]),

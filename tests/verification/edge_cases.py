@@ -38,6 +38,12 @@ checked against an independent source:
    does not accept: the first log line shows a step < 1); both must reach
    the solution of the
    default run (the same discrete problem: probes and reaction to 1e-6).
+9. A free Mindlin plate lifted far (Level 1e7, session 20 review): |U| is
+   the rigid lift, so the stopping test relative to |U| passed with the
+   deformation still wrong (reaction 98 times the load, exit 0). The
+   equilibrium check of the accepted iterate must stop it with exit
+   status 2 and its message; the same plate lifted by 0.5 (item 1) passes
+   the check (relative_residual <= 1e-4 in summary.json).
 """
 import json
 import os
@@ -269,4 +275,23 @@ for after in ("3", "0"):
               "Damping after = %s: probe %d as in the default run" % (after, k))
     close(b["contact_force"], a["contact_force"], 1e-6,
           "Damping after = %s: reaction as in the default run" % after)
+# 9. the equilibrium check of the Mindlin model
+FAR = """set Model = mindlin
+subsection Geometry
+  set Subdivisions = 2, 2
+  set Edge conditions = free, free, free, free
+end
+subsection Obstacle
+  set Level = %s
+end
+"""
+_, log = run(args, "mindlin_lifted_far", FAR % "1e7", expect_status=2)
+check("the accepted iterate is not an equilibrium" in log,
+      "Mindlin plate lifted by 1e7: exit status 2 from the equilibrium check")
+s, _ = run(args, "mindlin_lifted_near", FAR % "0.5")
+check(s["cycles"][-1]["extra"]["relative_residual"] <= 1e-4,
+      "Mindlin plate lifted by 0.5: |R|/|AU| = %.3g <= 1e-4"
+      % s["cycles"][-1]["extra"]["relative_residual"])
+close(s["cycles"][-1]["contact_force"], 2.0, 1e-6,
+      "Mindlin plate lifted by 0.5: the obstacle carries the load 0.02 x 100")
 finish()

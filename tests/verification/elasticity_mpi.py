@@ -11,7 +11,16 @@ must agree to the solver tolerance: the Newton correction is below 1e-6 in
 the energy norm, so deflections agree to ~1e-6 relative; we require 1e-5
 for deflections, the reaction and the contact area (the area is a count of
 quadrature points times weights: a point exactly at s_n = 0 could flip; it
-is compared to 1e-5 as well and this has held in every run)."""
+is compared to 1e-5 as well and this has held in every run).
+
+Then plates that no edge holds in their plane (the frictionless 3D model
+constrains the in-plane rigid motions at support points; before, their
+singular Newton matrices stagnated or failed the equilibrium check on 2
+ranks): a 10 x 6 plate simply supported on all edges (u3 = 0 only) pressed
+on a plane, the same on 1 and 2 ranks; and a free plate lifted by an
+obstacle above it (Level 0.5) on 2 ranks, which must carry the whole load
+2 = 0.02 x 100 and sit on the obstacle (bottom face at 0.5, mid-plane at
+0.505)."""
 import os
 from common import parse_args, run, check, close, finish
 
@@ -35,4 +44,44 @@ for a, b in zip(one["cycles"], two["cycles"]):
     close(b["min_deflection"], a["min_deflection"], 1e-5, c + "min deflection, 2 vs 1 ranks")
     for i, (pa, pb) in enumerate(zip(a["probes"], b["probes"])):
         close(pb, pa, 1e-5, c + "probe %d, 2 vs 1 ranks" % i)
+
+ss = """set Model = elasticity
+subsection Geometry
+  set Length x = 10
+  set Length y = 6
+  set Edge conditions = simply supported, simply supported, simply supported, simply supported
+  set Subdivisions = 8, 8, 1
+end
+subsection Obstacle
+  set Level = -0.5
+end
+subsection Output
+  set Probe points = 5, 3; 2, 1.5
+end
+"""
+one, _ = run(args, "ss_np1", ss, np=1)
+two, _ = run(args, "ss_np2", ss, np=2)
+a, b = one["cycles"][0], two["cycles"][0]
+print("simply supported: iterations %d (1 rank), %d (2 ranks)"
+      % (a["nonlinear_iterations"], b["nonlinear_iterations"]))
+check(a["converged"] and b["converged"] and a["active_points"] > 0,
+      "simply supported plate in contact: converged on 1 and 2 ranks")
+close(b["contact_force"], a["contact_force"], 1e-5, "simply supported: reaction, 2 vs 1 ranks")
+for i, (pa, pb) in enumerate(zip(a["probes"], b["probes"])):
+    close(pb, pa, 1e-5, "simply supported: probe %d, 2 vs 1 ranks" % i)
+
+lifted = """set Model = elasticity
+subsection Geometry
+  set Edge conditions = free, free, free, free
+  set Subdivisions = 2, 2, 1
+end
+subsection Obstacle
+  set Level = 0.5
+end
+"""
+s2, _ = run(args, "lifted_np2", lifted, np=2)
+c = s2["cycles"][0]
+check(c["converged"], "free plate lifted by the obstacle, 2 ranks: converged")
+close(c["contact_force"], 2.0, 1e-6, "lifted plate: the obstacle carries the load 0.02 x 100")
+close(c["min_deflection"], 0.505, 1e-8, "lifted plate: mid-plane at 0.5 + t/2")
 finish()

@@ -136,6 +136,19 @@ namespace NitscheContact
     refine_in_plane(unsigned int cycle);
     void
     setup_dofs();
+    /// Without friction the in-plane rigid motions (translations along x1,
+    /// x2, rotation about x3) change neither the strains nor u_n: those
+    /// that no clamped or symmetry face (or clamped top) holds make every
+    /// Newton matrix singular. Constrain them at support points (u1 and u2
+    /// at the one nearest the plate centre, u1 at one on an edge y = 0 or
+    /// Ly); their reactions vanish whenever the problem has a solution,
+    /// i.e. the load has no in-plane resultant or moment, which
+    /// assemble_bulk() checks. Sets pinned_modes; call before close().
+    void
+    pin_in_plane_rigid_motions();
+    /// which in-plane rigid motions are constrained: translation x1, x2,
+    /// rotation about x3
+    std::array<bool, 3> pinned_modes = {{false, false, false}};
     /// Elastic stiffness and load; for theta != 0 also the constant
     /// matrix (the stiffness plus the theta-terms of every contact point).
     void
