@@ -820,9 +820,14 @@ namespace NitscheContact
       << std::setprecision(12);
     for (const ContactPointRecord &p : points)
       {
+        // where no obstacle lies below the point (outside a sphere's
+        // shadow), gap and s_n are nan, not the internal sentinel
+        const bool   below = ObstacleSurface::has_obstacle(p.gap);
+        const double nan   = std::numeric_limits<double>::quiet_NaN();
         f << p.x << ',' << p.y << ',' << p.cell_x << ',' << p.cell_y << ','
-          << p.weight << ',' << p.status << ',' << p.s_n << ',' << p.sigma_n
-          << ',' << p.gap << ',' << p.pressure;
+          << p.weight << ',' << p.status << ',' << (below ? p.s_n : nan)
+          << ',' << p.sigma_n << ',' << (below ? p.gap : nan) << ','
+          << p.pressure;
         for (const Tensor<1, 3> *v : {&p.slip, &p.q})
           for (unsigned int d = 0; d < 3; ++d)
             f << ',' << (*v)[d];

@@ -193,6 +193,12 @@ main(int argc, char *argv[])
                            (text.find('\n') != std::string::npos ? "\n" : " ") +
                            text + where);
         }
+      catch (const std::exception &e)
+        {
+          // the XML and JSON readers (chosen by the file's extension)
+          // throw boost's parser errors
+          throw InputError("cannot read '" + file + "': " + e.what());
+        }
 
       CommonParameters common;
       common.parse(prm);

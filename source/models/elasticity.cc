@@ -463,6 +463,39 @@ namespace NitscheContact
                 std::to_string(local_refinement_steps),
                 "local refinement needs 'Elasticity/Refinement box'; "
                 "allowed without a box is 0");
+    if (local_refinement_steps > 0 && refinement_box.size() == 2)
+      {
+        // Every step splits the cells in the box into 8: estimate the
+        // first mesh as the common check of 'Geometry/Subdivisions' does
+        // (the cells outside, plus those inside times 8^steps; p4est's
+        // 2:1 balance adds a layer around the box, ignored here), and
+        // refuse more than 1e7 cells before any memory is used.
+        const double lo[3] = {0., 0., -prm.thickness / 2},
+                     hi[3] = {prm.length_x, prm.length_y, prm.thickness / 2};
+        double fraction = 1.;
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            const double a = std::max(lo[d], std::min(refinement_box[0][d],
+                                                      refinement_box[1][d])),
+                         b = std::min(hi[d], std::max(refinement_box[0][d],
+                                                      refinement_box[1][d]));
+            fraction *= std::max(0., b - a) / (hi[d] - lo[d]);
+          }
+        const double base =
+          double(prm.subdivisions[0]) * prm.subdivisions[1] *
+          prm.subdivisions[2] * std::pow(8., prm.initial_refinement);
+        const double cells =
+          base * (1. + fraction * std::pow(8., local_refinement_steps));
+        if (cells > 1e7)
+          bad_value("Elasticity/Local refinement steps",
+                    std::to_string(local_refinement_steps),
+                    "the refinement box covers " +
+                      number_to_string(100. * fraction) +
+                      " % of the body, so the first mesh would have about " +
+                      number_to_string(cells) +
+                      " cells, more than 1e7; use fewer steps or a smaller "
+                      "box");
+      }
     if (!refine_through_thickness && !refinement_box.empty() &&
         local_refinement_steps > 0 && prm.n_cycles > 1)
       throw InputError(
@@ -1773,7 +1806,8 @@ namespace NitscheContact
             const PointState st =
               evaluate_contact_point(in, NonlinearScheme::newton);
             const double JxW = fvf.JxW(q);
-            max_penetration  = std::max(max_penetration, in.u_n - in.gap);
+            if (ObstacleSurface::has_obstacle(in.gap))
+              max_penetration = std::max(max_penetration, in.u_n - in.gap);
             if (st.lambda_n < 0.)
               {
                 area += JxW;
@@ -1815,7 +1849,12 @@ namespace NitscheContact
 
     res.extra = {
       {"max_contact_pressure", Utilities::MPI::max(max_pressure, comm)},
-      {"max_penetration", Utilities::MPI::max(max_penetration, comm)},
+      // (null in summary.json where no obstacle lies below any point)
+      {"max_penetration",
+       [&]() {
+         const double m = Utilities::MPI::max(max_penetration, comm);
+         return m > -1e300 ? m : std::numeric_limits<double>::quiet_NaN();
+       }()},
       {"nitsche_trace_constant", trace_constant_value},
       {"relative_residual", relative_residual}};
     // (collective sums: every rank has the same prm.friction)

@@ -1502,7 +1502,8 @@ namespace NitscheContact
             res.contact_force += p * kit.JxW[q];
             load_total += load_at(c, q) * kit.JxW[q];
             // w - psi = -(u_n - g); penetration is psi - w > 0
-            max_penetration = std::max(max_penetration, in.u_n - in.gap);
+            if (ObstacleSurface::has_obstacle(in.gap))
+              max_penetration = std::max(max_penetration, in.u_n - in.gap);
           }
       }
 
@@ -1577,7 +1578,12 @@ namespace NitscheContact
         res.errors.emplace_back("H2", std::sqrt(e2));
       }
 
-    res.extra.emplace_back("max_penetration", max_penetration);
+    // (null in summary.json where no obstacle lies below any point)
+    res.extra.emplace_back("max_penetration",
+                           max_penetration >
+                               -std::numeric_limits<double>::max() ?
+                             max_penetration :
+                             std::numeric_limits<double>::quiet_NaN());
     res.extra.emplace_back("load_total", load_total);
     res.extra.emplace_back("r", kit.r);
     if (kit.inverse_constant > 0.)

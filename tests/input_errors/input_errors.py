@@ -86,6 +86,10 @@ CASES = [
      "subsection Obstacle\n  set Level = 0.5\nend\n"
      "subsection Elasticity\n  set Top tangential traction = 0.001; 0\nend",
      ["Elasticity/Top tangential traction", "'0.001; 0'", "no resultant", "x1 component"]),
+    ("local refinement of the whole body beyond 1e7 cells",
+     "subsection Elasticity\n  set Refinement box = -1, -1, -1; 11, 11, 1\n"
+     "  set Local refinement steps = 10\nend",
+     ["Elasticity/Local refinement steps", "'10'", "100 % of the body", "1e7"]),
     ("elasticity Krylov tolerance = 0",
      "subsection Elasticity\n  set Linear solver = amg\n  set Krylov tolerance = 0\nend",
      ["Elasticity/Krylov tolerance", "'0'", "(0, 1)"]),
@@ -322,6 +326,16 @@ for i, (case, body, expected) in enumerate(CASES):
           "%s: reported as an input error, not an internal error" % case)
     if case != "unwritable output directory":
         check(not os.path.exists(outdir), "%s: no output directory created" % case)
+
+# A malformed XML parameter file (deal.II picks the reader by the
+# extension): an input error naming the file, not an internal error.
+bad_xml = os.path.join(args.workdir, "malformed.xml")
+with open(bad_xml, "w") as f:
+    f.write("<bad")
+r = execute([bad_xml])
+check(r.returncode == 1 and "cannot read '%s'" % bad_xml in r.stderr
+      and "internal error" not in r.stderr,
+      "malformed XML file: exit %d (1), message: %s" % (r.returncode, r.stderr.strip()[:160]))
 
 # A plate neither supported by its edges nor in contact: the first Newton
 # matrix is singular (a rigid motion is free). Before, the direct solvers
