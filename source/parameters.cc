@@ -103,6 +103,19 @@ namespace NitscheContact
           }
   }
 
+  void
+  non_finite_at_point(const std::string &entry,
+                      const std::string &expression,
+                      const double       value,
+                      const Point<2>    &p)
+  {
+    bad_value(entry,
+              expression,
+              "is " + number_to_string(value) + " at the quadrature point (" +
+                number_to_string(p[0]) + ", " + number_to_string(p[1]) +
+                "); it must be a finite number on the whole plate");
+  }
+
   template void
   check_finite_on_plate<2>(const Function<2> &, const std::string &,
                            const std::string &, double, double, double, bool);

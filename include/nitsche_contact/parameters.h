@@ -291,6 +291,15 @@ namespace NitscheContact
                         double                       thickness,
                         bool                         interior = false);
 
+  /// bad_value(entry, expression, ...) for a function value that is not a
+  /// finite number at the quadrature point p of an assembly (the grid of
+  /// check_finite_on_plate() can miss a thin band where it is not).
+  [[noreturn]] void
+  non_finite_at_point(const std::string      &entry,
+                      const std::string      &expression,
+                      double                  value,
+                      const dealii::Point<2> &p);
+
   /// For the plate models: 'Geometry/Subdivisions' must not ask for cells
   /// through the thickness (nz = 1); bad_value naming the model otherwise.
   void

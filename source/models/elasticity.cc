@@ -899,6 +899,18 @@ namespace NitscheContact
     // in-plane resultant, moment about x3 (through the plate centre) and
     // their scale, of the top tangential traction
     double in_plane[4] = {0., 0., 0., 0.};
+    // the first value of the load or traction that is not a finite number
+    // on this rank: entry (1 load, 2 traction), value, point
+    double non_finite[4] = {0., 0., 0., 0.};
+    const auto note = [&](const double entry, const double v, const Point<3> &x) {
+      if (!std::isfinite(v) && non_finite[0] == 0.)
+        {
+          non_finite[0] = entry;
+          non_finite[1] = v;
+          non_finite[2] = x[0];
+          non_finite[3] = x[1];
+        }
+    };
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -932,6 +944,7 @@ namespace NitscheContact
                   const Point<3> &x = fv.quadrature_point(q);
                   const double    f3 =
                     load_function->value(Point<2>(x[0], x[1])) / prm.thickness;
+                  note(1., f3, x);
                   for (unsigned int i = 0; i < n; ++i)
                     if (comp[i] == 2)
                       cell_rhs(i) += f3 * fv.shape_value(i, q) * JxW;
@@ -954,6 +967,9 @@ namespace NitscheContact
                                          load_as_traction ?
                                            load_function->value(p) :
                                            0.};
+                    note(2., t[0], x);
+                    note(2., t[1], x);
+                    note(1., t[2], x);
                     {
                       const double dx = x[0] - prm.length_x / 2,
                                    dy = x[1] - prm.length_y / 2,
@@ -975,6 +991,28 @@ namespace NitscheContact
         }
     bulk_matrix.compress(VectorOperation::add);
     load.compress(VectorOperation::add);
+    {
+      // (collective) the report of the lowest rank that found one
+      const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+      const unsigned int first =
+        Utilities::MPI::min(non_finite[0] != 0. ?
+                              rank :
+                              Utilities::MPI::n_mpi_processes(comm),
+                            comm);
+      if (first < Utilities::MPI::n_mpi_processes(comm))
+        {
+          std::array<double, 4> report{
+            {non_finite[0], non_finite[1], non_finite[2], non_finite[3]}};
+          report = Utilities::MPI::broadcast(comm, report, first);
+          const bool traction = report[0] == 2.;
+          non_finite_at_point(traction ? "Elasticity/Top tangential traction" :
+                                         "Load/Transverse load",
+                              traction ? tangential_traction :
+                                         prm.load_expression,
+                              report[1],
+                              Point<2>(report[2], report[3]));
+        }
+    }
     // A held in-plane rigid motion (pin_in_plane_rigid_motions()) must not
     // be loaded: frictionless contact cannot balance the load then, and
     // the pins would carry it silently.

@@ -517,7 +517,14 @@ namespace NitscheContact
               const Point<2> x(x0[0] + kit.unit_points[q][0] * kit.h[0],
                                x0[1] + kit.unit_points[q][1] * kit.h[1]);
               if (!load_is_constant)
-                load_values[c * nq + q] = load_function->value(x);
+                {
+                  load_values[c * nq + q] = load_function->value(x);
+                  if (!std::isfinite(load_values[c * nq + q]))
+                    non_finite_at_point("Load/Transverse load",
+                                        prm.load_expression,
+                                        load_values[c * nq + q],
+                                        x);
+                }
               if (!psi_is_constant)
                 {
                   psi_values[c * nq + q] = obstacle.height(x) + shift;

@@ -686,7 +686,11 @@ namespace NitscheContact
           {
             const Point<2> x(v0[0] + q2.point(q)[0] * hx,
                              v0[1] + q2.point(q)[1] * hy);
-            const double   f = load_function->value(x) * q2.weight(q) * hx * hy;
+            const double   value = load_function->value(x);
+            if (!std::isfinite(value))
+              non_finite_at_point("Load/Transverse load",
+                                  prm.load_expression, value, x);
+            const double f = value * q2.weight(q) * hx * hy;
             for (unsigned int i = 0; i < n; ++i)
               cell_load(i) += f * values[q][i];
           }

@@ -90,6 +90,22 @@ CASES = [
      "subsection Elasticity\n  set Refinement box = -1, -1, -1; 11, 11, 1\n"
      "  set Local refinement steps = 10\nend",
      ["Elasticity/Local refinement steps", "'10'", "100 % of the body", "1e7"]),
+    # a load that is not finite in a band between the points of the
+    # 101 x 101 grid check, but at a quadrature point of the assembly
+    ("3D load not finite at a quadrature point",
+     "subsection Load\n  set Transverse load = -0.02 + 0*sqrt((x-1.127)^2 - 1e-6)\nend",
+     ["Load/Transverse load", "quadrature point (1.127"]),
+    ("3D tangential traction not finite at a quadrature point",
+     "subsection Elasticity\n  set Top tangential traction = 0*sqrt((x-1.127)^2 - 1e-6); 0\nend",
+     ["Elasticity/Top tangential traction", "quadrature point (1.127"]),
+    ("Kirchhoff load not finite at a quadrature point",
+     "set Model = kirchhoff\nsubsection Geometry\n  set Subdivisions = 8, 8\nend\n"
+     "subsection Load\n  set Transverse load = -0.02 + 0*sqrt((x-5.0422)^2 - 1e-6)\nend",
+     ["Load/Transverse load", "quadrature point (5.0422"]),
+    ("Mindlin load not finite at a quadrature point",
+     "set Model = mindlin\nsubsection Geometry\n  set Subdivisions = 8, 8\nend\n"
+     "subsection Load\n  set Transverse load = -0.02 + 0*sqrt((x-5.2641)^2 - 1e-6)\nend",
+     ["Load/Transverse load", "quadrature point (5.264"]),
     ("elasticity Krylov tolerance = 0",
      "subsection Elasticity\n  set Linear solver = amg\n  set Krylov tolerance = 0\nend",
      ["Elasticity/Krylov tolerance", "'0'", "(0, 1)"]),
