@@ -149,5 +149,21 @@ for tag, text, theta, gamma0, h_n in [
     check((text in out) == expect and ("theta-terms" in out) == expect,
           "%s: theta = %d, gamma0 = %g: %s" % (tag, theta, gamma0,
                                               "warned, '" + text + "'" if expect else "no warning"))
+# The GSV shift warning (session 20): the status psi - w + alpha h_K^4
+# (D Delta^2 w - f) moves the obstacle condition by up to alpha h_K^4 |f|
+# where the discrete D Delta^2 w_h misses f; on one 10 x 10 cell of the
+# paper's plate that is 1e-4 / D * 1e4 * 0.02 = 1.092 (D = E t^3 / (12
+# (1 - nu^2))), above 1 % of the gap 0.995: warned; on the paper's 16^2
+# mesh 1.7e-5 of it: no warning.
+D = 2e5 * 0.01 ** 3 / (12 * (1 - nu ** 2))
+kirchhoff = open(os.path.join(here, "..", "..", "parameters", "paper_kirchhoff.prm")).read()
+for tag, sub in (("one_cell", "1, 1"), ("paper_16", "16, 16")):
+    _, out = run(args, "gsv_shift_" + tag,
+                 bias_case(kirchhoff, [("Number of cycles", "1"), ("Subdivisions", sub)]))
+    shift = 1e-4 / D * (10.0 / int(sub.split(",")[0])) ** 4 * 0.02
+    text = "shifts the contact condition by up to |f| alpha h_K^4 = %.4g" % shift
+    expect = shift > 0.01 * 0.995
+    check((text in out) == expect and ("shifts the contact condition" in out) == expect,
+          "GSV on %s cells: %s" % (sub, "warned, '" + text + "'" if expect else
+                                   "no shift warning (shift %.3g)" % shift))
 finish()
-

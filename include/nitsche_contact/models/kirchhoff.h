@@ -272,6 +272,8 @@ namespace NitscheContact
     bool coercivity_warned = false;
     /// the theta-term bias warning of Kirchhoff with Nitsche was printed
     bool bias_warned = false;
+    /// the GSV term's shift of the contact condition was reported
+    bool shift_warned = false;
     /// u[0..15] = the 16 coefficients of v on cell c (lexicographic index)
     void
     cell_coefficients(const dealii::Vector<double> &v,
