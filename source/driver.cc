@@ -543,9 +543,24 @@ namespace NitscheContact
   ContactDriver::run(ContactModel &model)
   {
     pcout << "nitsche-contact: model '" << model.name() << "'" << std::endl;
+    bool uses_gamma0 = false;
     for (const auto &kv : model.description())
-      pcout << "  " << kv.first << " = " << kv.second << std::endl;
+      {
+        pcout << "  " << kv.first << " = " << kv.second << std::endl;
+        uses_gamma0 = uses_gamma0 || kv.first == "gamma0";
+      }
     pcout << "  nonlinear scheme = " << scheme_name(prm.scheme) << std::endl;
+    // A review found gamma0 = 1e-6 (theta = 0) return a reaction 75 times
+    // the load with the plate far from the obstacle: with r = gamma0 E / h_n
+    // far below the stresses' scale the status follows sigma_n, not the gap.
+    if (uses_gamma0 && prm.gamma0 < 1.)
+      pcout << "  warning: 'Contact/Nitsche gamma0' = " << prm.gamma0
+            << " < 1: the penalty r = gamma0 E / h_n is below the scale of "
+               "the stresses, so points can be in contact away from the "
+               "obstacle (a reaction without contact); theta = 0 and -1 "
+               "converge for any gamma0 > 0, but with errors growing like "
+               "1/gamma0: use gamma0 >= 1"
+            << std::endl;
 
     for (unsigned int cycle = 0; cycle < prm.n_cycles; ++cycle)
       {
