@@ -1798,21 +1798,16 @@ namespace NitscheContact
     {
       TrilinosWrappers::MPI::Vector internal(locally_owned, comm);
       bulk_matrix.vmult(internal, solution);
-      const double scale = std::max(internal.l2_norm(),
-                                    std::abs(load_factor) * load.l2_norm());
-      relative_residual = scale > 0. ? residual.l2_norm() / scale : 0.;
-      if (!(relative_residual <= 1e-4) && !prm.allow_non_convergence)
-        throw ConvergenceFailure(
-          "the accepted iterate is not an equilibrium (|R| / |A U| = " +
-          std::to_string(relative_residual) +
-          " > 1e-4): the nonlinear solver's stopping test (a correction "
-          "below 'Nonlinear solver/Tolerance' on a settled contact status) "
-          "passed without a solution. Either a rigid motion is restrained "
-          "by contact alone and is not held (e.g. the tangential load "
-          "exceeds the friction limit F * normal force), or, with friction, "
-          "the Newton path stalled on damped steps (the paper's 3D plate "
-          "does so with 'Stick step on slip reversal = false'; keep it "
-          "true, or try 'Friction steps')");
+      relative_residual = check_equilibrium(
+        residual.l2_norm(),
+        internal.l2_norm(),
+        std::abs(load_factor) * load.l2_norm(),
+        prm.allow_non_convergence,
+        "Either a rigid motion is restrained by contact alone and is not "
+        "held (e.g. the tangential load exceeds the friction limit F * "
+        "normal force), or, with friction, the Newton path stalled on "
+        "damped steps (the paper's 3D plate does so with 'Stick step on "
+        "slip reversal = false'; keep it true, or try 'Friction steps')");
     }
     ghosted = solution;
 

@@ -1542,19 +1542,14 @@ namespace NitscheContact
             internal(dofs[i]) += cell_force(i);
         }
       constraints.set_zero(internal);
-      const double scale = std::max(internal.l2_norm(),
-                                    std::abs(load_factor) * load.l2_norm());
-      relative_residual = scale > 0. ? residual.l2_norm() / scale : 0.;
-      if (!(relative_residual <= 1e-4) && !prm.allow_non_convergence)
-        throw ConvergenceFailure(
-          "the accepted iterate is not an equilibrium (|R| / |A U| = " +
-          number_to_string(relative_residual) +
-          " > 1e-4): the nonlinear solver's stopping test (a correction "
-          "below 'Nonlinear solver/Tolerance' relative to |U| on a settled "
-          "contact status) passed without a solution; most often |U| is "
-          "dominated by a large rigid motion (a free plate lifted far by "
-          "the obstacle): lower 'Nonlinear solver/Tolerance' or support an "
-          "edge");
+      relative_residual = check_equilibrium(
+        residual.l2_norm(),
+        internal.l2_norm(),
+        std::abs(load_factor) * load.l2_norm(),
+        prm.allow_non_convergence,
+        "Most often |U| is dominated by a large rigid motion (a free plate "
+        "lifted far by the obstacle): lower 'Nonlinear solver/Tolerance' or "
+        "support an edge");
     }
 
     double area = 0., force = 0., tangential_force = 0.;
