@@ -294,14 +294,15 @@ namespace NitscheContact
   /// Equilibrium check of an accepted iterate (3D and Mindlin models):
   /// returns |R| / max(|A U|, |F|) from the norms of the residual, the
   /// internal force A U and the applied load, and throws ConvergenceFailure
-  /// when it exceeds 1e-4 unless 'allow' ('Allow non-convergence'); the
+  /// when it exceeds 'limit' unless 'allow' ('Allow non-convergence'); the
   /// message ends with the model's likely 'causes'.
   double
   check_equilibrium(double             residual_norm,
                     double             internal_norm,
                     double             load_norm,
                     bool               allow,
-                    const std::string &causes);
+                    const std::string &causes,
+                    double             limit = 1e-4);
 
   /// bad_value(entry, expression, ...) for a function value that is not a
   /// finite number at the quadrature point p of an assembly (the grid of

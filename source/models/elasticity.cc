@@ -1024,7 +1024,9 @@ namespace NitscheContact
                                       "moment about x3"};
         for (unsigned int m = 0; m < 3; ++m)
           if (pinned_modes[m] &&
-              std::abs(in_plane[m]) > 1e-10 * in_plane[3])
+              // (1e-6: the assembly's quadrature leaves about 1e-9 of an
+              // exactly balanced smooth traction, measured by a review)
+              std::abs(in_plane[m]) > 1e-6 * in_plane[3])
             bad_value("Elasticity/Top tangential traction",
                       tangential_traction,
                       "without friction, and with edge conditions that do "

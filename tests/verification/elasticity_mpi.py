@@ -20,7 +20,8 @@ ranks): a 10 x 6 plate simply supported on all edges (u3 = 0 only) pressed
 on a plane, the same on 1 and 2 ranks; and a free plate lifted by an
 obstacle above it (Level 0.5) on 2 ranks, which must carry the whole load
 2 = 0.02 x 100 and sit on the obstacle (bottom face at 0.5, mid-plane at
-0.505)."""
+0.505). That the pins carry no reaction is checked against the quarter
+plate with symmetry edges (no pins), the same discrete problem."""
 import os
 from common import parse_args, run, check, close, finish
 
@@ -69,6 +70,23 @@ check(a["converged"] and b["converged"] and a["active_points"] > 0,
 close(b["contact_force"], a["contact_force"], 1e-5, "simply supported: reaction, 2 vs 1 ranks")
 for i, (pa, pb) in enumerate(zip(a["probes"], b["probes"])):
     close(pb, pa, 1e-5, "simply supported: probe %d, 2 vs 1 ranks" % i)
+
+# The pins carry no reaction: the quarter plate [0,5] x [0,3] with symmetry
+# on x = 5 and y = 3 (which hold the in-plane motions: no pins) on the same
+# cells is the same discrete problem: the same probe, a quarter of the force.
+quarter = ss.replace("set Length x = 10", "set Length x = 5").replace(
+    "set Length y = 6", "set Length y = 3").replace(
+    "simply supported, simply supported, simply supported, simply supported",
+    "simply supported, symmetry, simply supported, symmetry").replace(
+    "set Subdivisions = 8, 8, 1", "set Subdivisions = 4, 4, 1").replace(
+    "set Probe points = 5, 3; 2, 1.5", "set Probe points = 5, 3; 2, 1.5")
+q, _ = run(args, "ss_quarter", quarter)
+cq = q["cycles"][0]
+check(cq["converged"], "quarter plate with symmetry edges: converged")
+close(4 * cq["contact_force"], a["contact_force"], 1e-6,
+      "pins carry no reaction: full plate's reaction = 4 x the quarter's")
+for i, (pa, pq) in enumerate(zip(a["probes"], cq["probes"])):
+    close(pq, pa, 1e-6, "pins carry no reaction: probe %d of the full and the quarter plate" % i)
 
 lifted = """set Model = elasticity
 subsection Geometry

@@ -166,13 +166,15 @@ for tag, sub in (("one_cell", "1, 1"), ("paper_16", "16, 16")):
     check((text in out) == expect and ("shifts the contact condition" in out) == expect,
           "GSV on %s cells: %s" % (sub, "warned, '" + text + "'" if expect else
                                    "no shift warning (shift %.3g)" % shift))
-# gamma0 below 1 (session 20): a warning that the penalty is below the
-# stresses' scale (a review's gamma0 = 1e-6, theta = 0, gave a reaction 75
-# times the load without contact); the paper's friction file (gamma0 = 2)
-# has none, and the GSV formulation, which has no gamma0, none either.
-for tag, text, gamma0, expect in (("mindlin_g0.5", mindlin_friction, "0.5", True),
+# gamma0 below 0.1 (session 20): a warning that the penalty is far below
+# the stresses' scale (a review's gamma0 = 1e-6, theta = 0, gave a reaction
+# 75 times the load without contact); gamma0 = 0.1 (the theta = -1 patch
+# test's value, exact there) and the paper's friction file (gamma0 = 2) have
+# none, and the GSV formulation, which has no gamma0, none either.
+for tag, text, gamma0, expect in (("mindlin_g0.05", mindlin_friction, "0.05", True),
+                                  ("mindlin_g0.1", mindlin_friction, "0.1", False),
                                   ("mindlin_g2", mindlin_friction, "2", False),
-                                  ("gsv_g0.5", kirchhoff, "0.5", False)):
+                                  ("gsv_g0.05", kirchhoff, "0.05", False)):
     _, out = run(args, "small_gamma0_" + tag,
                  bias_case(text, [("Number of cycles", "1"), ("Nitsche gamma0", gamma0)]
                            if "Nitsche gamma0" in text else [("Number of cycles", "1")])
@@ -180,6 +182,7 @@ for tag, text, gamma0, expect in (("mindlin_g0.5", mindlin_friction, "0.5", True
                    "subsection Nonlinear solver\n  set Maximum iterations = 1\n"
                    "  set Allow non-convergence = true\nend\n" % gamma0,
                  expect_status=[0, 2])
-    check(("'Contact/Nitsche gamma0' = %s < 1" % gamma0 in out) == expect,
-          "%s: %s" % (tag, "warned that gamma0 < 1" if expect else "no gamma0 warning"))
+    check(("'Contact/Nitsche gamma0' = %s < 0.1" % gamma0 in out) == expect
+          and (" < 0.1: the penalty" in out) == expect,
+          "%s: %s" % (tag, "warned that gamma0 < 0.1" if expect else "no gamma0 warning"))
 finish()
