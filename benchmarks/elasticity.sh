@@ -19,8 +19,13 @@
 # 'neg' is the largest number of negative eigenvalues of a Newton matrix of
 # the cycle (from the L D L^T factorisation; '-' when it was LU). The ninth
 # selects how MUMPS factorises the (symmetric, theta = 1) Newton matrices:
-# 'ldlt' (default) or 'lu' (through Amesos, as before session 10). Usage:
-#   benchmarks/elasticity.sh [path/to/nitsche-contact] [cycles] [direct|amg] [ranks] [plane|all] [gauss|lobatto] [gamma0] [subdivisions] [ldlt|lu]
+# 'ldlt' (default) or 'lu' (through Amesos, as before session 10). The
+# tenth selects how each cycle starts: 'nested' (default: the previous
+# cycle's solution, U = 0 on the first) or 'plate' ('Elasticity/Plate
+# predictor': the Mindlin plate's solution lifted to 3D; the column 'pred'
+# then gives its Newton iterations, whose seconds are part of 'setup').
+# Usage:
+#   benchmarks/elasticity.sh [path/to/nitsche-contact] [cycles] [direct|amg] [ranks] [plane|all] [gauss|lobatto] [gamma0] [subdivisions] [ldlt|lu] [nested|plate]
 # The program must be built with CMAKE_BUILD_TYPE=Release. Nonlinear
 # tolerance 1e-6 (the round-off floor of this thin plate is ~1e-7).
 set -e
@@ -49,6 +54,11 @@ case "$factorization" in
   lu) symmetric=false ;;
   *) echo "benchmarks/elasticity.sh: factorization must be 'ldlt' or 'lu', not '$factorization'" >&2; exit 1 ;;
 esac
+case "${10:-nested}" in
+  nested) predictor=false ;;
+  plate) predictor=true ;;
+  *) echo "benchmarks/elasticity.sh: start must be 'nested' or 'plate', not '${10}'" >&2; exit 1 ;;
+esac
 subdivisions=${8:-8}
 case "$subdivisions" in
   ''|*[!0-9]*|0) echo "benchmarks/elasticity.sh: subdivisions must be a positive integer, not '$subdivisions'" >&2; exit 1 ;;
@@ -64,7 +74,7 @@ sed -e "s/^\( *set Number of cycles *=\).*/\1 $cycles/" \
     -e "s/^\( *set Format *=\).*/\1 none/" \
     -e "s/^\( *set Print timings *=\).*/\1 true/" \
     -e "s/^\( *set Load applied as *=.*\)/\1\n  set Linear solver = $solver/" \
-    -e "s/^\( *set Refine through thickness *=\).*/\1 $through\n  set Contact quadrature rule = $rule/" \
+    -e "s/^\( *set Refine through thickness *=\).*/\1 $through\n  set Contact quadrature rule = $rule\n  set Plate predictor = $predictor/" \
     "$here/parameters/paper_3d.prm" > "$work/bench.prm"
 run=("$exe")
 if [ "$ranks" -gt 1 ]; then run=(mpirun -np "$ranks" "$exe"); fi
@@ -82,16 +92,17 @@ print("3D elasticity model (Q2), paper test, linear solver %s (%s), %s MPI rank(
       "3x3 %s contact points per face, gamma0 %s (trace constant C_n %.3g)"
       % (sys.argv[4], sys.argv[8], sys.argv[5], sys.argv[6], sys.argv[7],
          dict(s["cycles"][-1]["extra"])["nitsche_trace_constant"]))
-print("%5s %9s %5s %8s %8s %8s %8s %8s %8s %9s %5s" % ("cycle", "dofs", "its", "setup",
-      "assembly", "solve", "postproc", "output", "total", "force", "neg"))
+print("%5s %9s %5s %5s %8s %8s %8s %8s %8s %8s %9s %5s" % ("cycle", "dofs", "its", "pred",
+      "setup", "assembly", "solve", "postproc", "output", "total", "force", "neg"))
 acc = 0.0
 for c in s["cycles"]:
     t = c["wall_times"]
     tot = t["setup"] + t["assembly"] + t["solve"] + t["postprocess"] + t["output"]
     acc += tot
     neg = dict(c["extra"]).get("newton_negative_eigenvalues")
-    print("%5d %9d %5d %8.2f %8.2f %8.2f %8.2f %8.2f %8.2f %9.6f %5s" % (c["cycle"], c["n_dofs"],
-          c["nonlinear_iterations"], t["setup"], t["assembly"], t["solve"],
+    print("%5d %9d %5d %5s %8.2f %8.2f %8.2f %8.2f %8.2f %8.2f %9.6f %5s" % (c["cycle"], c["n_dofs"],
+          c["nonlinear_iterations"], c.get("predictor_iterations", "-"),
+          t["setup"], t["assembly"], t["solve"],
           t["postprocess"], t["output"], tot, c["contact_force"],
           "-" if neg is None else "%d" % neg))
 print("sum of phases %.1f s, wall clock of the run %.1f s"

@@ -118,8 +118,8 @@ namespace NitscheContact
     // for the non-monotone acceptance of full Newton steps below. Only on
     // nested cycles: from a cold start (cycle 0) the rule gave as many or
     // more iterations (doc/design.md).
-    const bool nonmonotone =
-      prm.nonmonotone_window > 0 && prm.line_search && cycle > 0;
+    const bool nonmonotone = prm.nonmonotone_window > 0 && prm.line_search &&
+                             (cycle > 0 || warm_start);
     std::vector<double> energies;
     std::vector<double> relatives; // |dU|_a/|U|_a of each solve
     stagnation.clear();
@@ -229,7 +229,7 @@ namespace NitscheContact
 
         // the iterate from which this step starts (log line 'iteration
         // solves+1')
-        if (prm.contact_points_per_iteration)
+        if (prm.contact_points_per_iteration && !solving_predictor)
           write_contact_points(model, cycle, solves);
 
         timer.restart();
@@ -543,6 +543,69 @@ namespace NitscheContact
   }
 
   void
+  ContactDriver::solve_predictor(ContactModel                    &predictor,
+                                 const std::vector<unsigned int> &cycles,
+                                 CycleRecord                     &rec)
+  {
+    // the predictor's iterations are this cycle's start, not its work: a
+    // record of their own, and no console lines but one per cycle
+    const bool print = pcout.is_active();
+    for (const unsigned int k : cycles)
+      {
+        CycleRecord own;
+        own.cycle = k;
+        records.push_back(own);
+        bool       converged = false;
+        PhaseTimes t;
+        Timer      timer;
+        predictor.setup_cycle(k);
+        solving_predictor = true;
+        pcout.set_condition(false);
+        unsigned int iterations = 0;
+        try
+          {
+            iterations = solve_nonlinear(predictor, k, t, converged);
+          }
+        catch (...)
+          {
+            solving_predictor = false;
+            pcout.set_condition(print);
+            records.pop_back();
+            throw;
+          }
+        solving_predictor = false;
+        pcout.set_condition(print);
+        records.pop_back();
+        rec.predictor_iterations += iterations;
+        rec.predictor_dofs    = predictor.n_dofs();
+        rec.predictor_seconds += timer.wall_time();
+        pcout << "  predictor '" << predictor.name() << "', its cycle " << k
+              << ": " << predictor.n_dofs() << " DoFs, " << iterations
+              << " iterations, " << std::fixed << std::setprecision(2)
+              << timer.wall_time() << " s" << std::defaultfloat
+              << std::setprecision(6) << std::endl;
+        if (!converged)
+          {
+            const std::string what =
+              "the predictor '" + predictor.name() + "' ('Elasticity/Plate "
+              "predictor') did not converge in " +
+              std::to_string(iterations) + " iterations on its cycle " +
+              std::to_string(k) + " (" + std::to_string(predictor.n_dofs()) +
+              " DoFs)";
+            if (!prm.allow_non_convergence)
+              throw ConvergenceFailure(
+                what + "; raise 'Nonlinear solver/Maximum iterations' or set "
+                       "'Plate predictor = false'");
+            pcout << "  warning: " << what
+                  << "; starting from its last iterate as 'Allow "
+                     "non-convergence' asks"
+                  << std::endl;
+          }
+      }
+    warm_start = true;
+  }
+
+  void
   ContactDriver::run(ContactModel &model)
   {
     pcout << "nitsche-contact: model '" << model.name() << "'" << std::endl;
@@ -616,6 +679,8 @@ namespace NitscheContact
         model.set_friction_scale(stages[0].friction_scale);
         try
           {
+            if (ContactModel *p = model.predictor())
+              solve_predictor(*p, model.predictor_cycles(cycle), rec);
             model.setup_cycle(cycle);
           }
         catch (const InputError &e)
@@ -984,7 +1049,14 @@ namespace NitscheContact
           << ",\n      \"n_dofs\": " << r.n_dofs
           << ",\n      \"h\": " << json_number(r.h)
           << ",\n      \"nonlinear_iterations\": " << r.iterations
-          << ",\n      \"linear_iterations\": " << r.linear_iterations
+          << ",\n      \"linear_iterations\": " << r.linear_iterations;
+        if (r.predictor_dofs > 0)
+          f << ",\n      \"predictor_dofs\": " << r.predictor_dofs
+            << ",\n      \"predictor_iterations\": "
+            << r.predictor_iterations
+            << ",\n      \"predictor_seconds\": "
+            << json_number(r.predictor_seconds);
+        f
           << ",\n      \"converged\": " << (r.converged ? "true" : "false")
           << ",\n      \"contact_points\": " << r.counts.n_points
           << ",\n      \"active_points\": " << r.counts.n_active

@@ -43,6 +43,16 @@ namespace NitscheContact
     solve_nonlinear(ContactModel &model, unsigned int cycle, PhaseTimes &t,
                     bool &converged);
 
+    struct CycleRecord;
+
+    /// Solve the model's predictor on its cycles `cycles` (before the
+    /// model's setup_cycle()), recording its work in `rec`; throws
+    /// ConvergenceFailure if it does not converge (unless allowed).
+    void
+    solve_predictor(ContactModel                    &predictor,
+                    const std::vector<unsigned int> &cycles,
+                    CycleRecord                     &rec);
+
     void
     write_profile(const ContactModel &model, unsigned int cycle) const;
 
@@ -71,6 +81,11 @@ namespace NitscheContact
     /// frictionless stage of 'Friction steps')
     double                     stage_friction = 0.;
     dealii::ConditionalOStream pcout;
+    /// true while solve_predictor() runs (no per-iteration files)
+    bool                       solving_predictor = false;
+    /// the cycles start from a predictor's solution: the non-monotone
+    /// steps of nested cycles apply to the first cycle too
+    bool                       warm_start = false;
 
     struct CycleRecord
     {
@@ -84,6 +99,11 @@ namespace NitscheContact
       ContactCounts  counts;
       CycleResults   results;
       PhaseTimes     times;
+      /// the predictor's DoFs on its last cycle (0: no predictor), its
+      /// iterations and seconds (part of times.setup) for this cycle
+      std::uint64_t  predictor_dofs       = 0;
+      unsigned int   predictor_iterations = 0;
+      double         predictor_seconds    = 0.;
     };
     std::vector<CycleRecord>                           records;
     std::map<std::string, std::vector<std::pair<double, std::string>>>

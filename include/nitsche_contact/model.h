@@ -177,6 +177,23 @@ namespace NitscheContact
     set_friction_scale(double /*scale*/)
     {}
 
+    /// A simpler model whose solution starts each cycle of this one (the
+    /// Mindlin plate of the 3D model's 'Plate predictor'); nullptr without.
+    /// Before setup_cycle(cycle) the driver solves it on its cycles
+    /// predictor_cycles(cycle), with this run's nonlinear settings and
+    /// without output; setup_cycle() then takes the initial iterate from it
+    /// instead of U = 0 or the previous cycle's solution.
+    virtual ContactModel *
+    predictor()
+    {
+      return nullptr;
+    }
+    virtual std::vector<unsigned int>
+    predictor_cycles(unsigned int /*cycle*/) const
+    {
+      return {};
+    }
+
     virtual std::uint64_t
     n_dofs() const = 0;
 

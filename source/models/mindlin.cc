@@ -210,9 +210,17 @@ namespace NitscheContact
   MindlinModel::MindlinModel(const CommonParameters &common,
                              ParameterHandler       &parameters,
                              MPI_Comm                comm)
+    : MindlinModel(common, read_settings(parameters, common), comm)
+  {}
+
+
+
+  MindlinModel::MindlinModel(const CommonParameters &common,
+                             const Settings         &given,
+                             MPI_Comm                comm)
     : prm(common)
     , comm(comm)
-    , settings(read_settings(parameters, common))
+    , settings(given)
     , eps(0.5 * common.thickness)
     , lambda(common.lambda())
     , mu(common.mu())
@@ -405,7 +413,9 @@ namespace NitscheContact
       }
     constraints.close();
 
-    assembled_matrix = !settings.multigrid || settings.check_multigrid;
+    use_multigrid    = settings.multigrid &&
+                    dof_handler.n_dofs() >= settings.multigrid_min_dofs;
+    assembled_matrix = !use_multigrid || settings.check_multigrid;
     constant_matrix.clear();
     system_matrix.clear();
     if (assembled_matrix)
@@ -431,11 +441,11 @@ namespace NitscheContact
         theta_bending_bias_warning(prm, h_n, "Mindlin plate",
                                    prm.friction > 0. ? settings.shear_factor :
                                                        0.);
-      if (!w.empty() && w != bias_warning)
+      if (!w.empty() && w != bias_warning && !settings.quiet)
         std::cout << w << std::endl;
       bias_warning = w;
     }
-    if (settings.multigrid)
+    if (use_multigrid)
       setup_multigrid();
   }
 
@@ -753,7 +763,7 @@ namespace NitscheContact
     base = solution;
     increment = 0.;
     precompute_cell_data();
-    if (settings.multigrid)
+    if (use_multigrid)
       setup_multigrid_matrices();
     assemble_constant_part();
     previous_status.assign(static_cast<std::size_t>(nx) * ny *
@@ -1301,7 +1311,7 @@ namespace NitscheContact
   unsigned int
   MindlinModel::solve_linear()
   {
-    if (settings.multigrid)
+    if (use_multigrid)
       {
         Vector<double>     x;
         const unsigned int its = solve_multigrid(x);
@@ -1477,6 +1487,71 @@ namespace NitscheContact
         w[k] = value;
       }
     return w;
+  }
+
+
+
+  std::vector<std::array<double, 4>>
+  MindlinModel::plate_kinematics_at(const std::vector<Point<2>> &points) const
+  {
+    std::vector<std::array<double, 4>> values(
+      points.size(),
+      {{std::numeric_limits<double>::quiet_NaN(),
+        std::numeric_limits<double>::quiet_NaN(),
+        std::numeric_limits<double>::quiet_NaN(),
+        std::numeric_limits<double>::quiet_NaN()}});
+    const unsigned int n = fe.n_dofs_per_cell();
+    std::vector<types::global_dof_index> dofs(n);
+    // the value and gradient parts in the cell containing p
+    const auto evaluate = [&](const Point<2> &p, std::array<double, 4> &v) {
+      Point<2>   unit;
+      const auto cell = locate(p, unit);
+      if (cell == dof_handler.end())
+        return false;
+      cell->get_dof_indices(dofs);
+      v = {{0., 0., 0., 0.}};
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const unsigned int c = fe.system_to_component_index(i).first;
+          const double       u = solution(dofs[i]);
+          if (c == w_component)
+            v[0] += u * fe.shape_value(i, unit);
+          else if (c == phi_component || c == phi_component + 1)
+            {
+              const unsigned int d = c - phi_component;
+              v[1 + d] += u * fe.shape_value(i, unit);
+              // axis-parallel rectangle of sides hx, hy: d/dx = d/dxi / hx
+              v[3] += u * fe.shape_grad(i, unit)[d] / (d == 0 ? hx : hy);
+            }
+        }
+      return true;
+    };
+    for (unsigned int k = 0; k < points.size(); ++k)
+      {
+        std::array<double, 4> v;
+        if (!evaluate(points[k], v))
+          continue;
+        // div phi is discontinuous across cell sides: at a vertex or on a
+        // side take the mean over the cells around the point (at a vertex
+        // the central difference of the nodal rotations)
+        double       div = 0.;
+        unsigned int m   = 0;
+        for (const double sx : {-1., 1.})
+          for (const double sy : {-1., 1.})
+            {
+              const Point<2> q(
+                std::min(std::max(points[k][0] + sx * 1e-6 * hx, 0.),
+                         prm.length_x),
+                std::min(std::max(points[k][1] + sy * 1e-6 * hy, 0.),
+                         prm.length_y));
+              std::array<double, 4> u;
+              if (evaluate(q, u))
+                div += u[3], ++m;
+            }
+        v[3]      = div / m;
+        values[k] = v;
+      }
+    return values;
   }
 
 

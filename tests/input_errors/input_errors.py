@@ -221,6 +221,17 @@ CASES = [
     ("tangential traction on a clamped top face",
      "subsection Elasticity\n  set Top face = clamped\n  set Top tangential traction = 100; 0\nend",
      ["Elasticity/Top tangential traction", "100; 0", "clamped"]),
+    ("plate predictor with a clamped top face",
+     "subsection Elasticity\n  set Top face = clamped\n  set Plate predictor = true\nend",
+     ["Elasticity/Plate predictor", "'true'", "Top face = free"]),
+    ("plate predictor with load steps",
+     "subsection Nonlinear solver\n  set Load steps = 3\nend\n"
+     "subsection Elasticity\n  set Plate predictor = true\nend",
+     ["Elasticity/Plate predictor", "'true'", "Load steps' = 3", "Load steps = 1"]),
+    ("plate predictor with local refinement",
+     "subsection Elasticity\n  set Refinement box = 0, 0, -1; 1, 1, 1\n"
+     "  set Local refinement steps = 1\n  set Plate predictor = true\nend",
+     ["Elasticity/Plate predictor", "'true'", "Refinement box"]),
     ("tangential traction not finite",
      "subsection Elasticity\n  set Top tangential traction = 0; sqrt(x-20)\nend",
      ["Elasticity/Top tangential traction", "sqrt(x-20)", "finite number"]),

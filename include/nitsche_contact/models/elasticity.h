@@ -16,6 +16,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <nitsche_contact/model.h>
+#include <nitsche_contact/models/mindlin.h>
 #include <nitsche_contact/parameters.h>
 #include <nitsche_contact/reused_factorization.h>
 
@@ -38,6 +39,14 @@ namespace NitscheContact
     {
       return "elasticity";
     }
+    /// The Mindlin plate of 'Plate predictor' (nullptr without).
+    ContactModel *
+    predictor() override
+    {
+      return plate.get();
+    }
+    std::vector<unsigned int>
+    predictor_cycles(unsigned int cycle) const override;
     std::vector<std::pair<std::string, std::string>>
     description() const override;
     void
@@ -189,8 +198,20 @@ namespace NitscheContact
                      double                                   r) const;
     double trace_constant_value = 0.;
 
+    /// 'Plate predictor': build the Mindlin plate on the in-plane nodes
+    /// (its parameters in plate_prm), and lift its solution to the start U
+    void
+    make_plate_predictor();
+    void
+    lift_plate_solution();
+
     const CommonParameters &prm;
     MPI_Comm                comm;
+    /// the plate predictor's parameters (it keeps a reference), the plate,
+    /// and the number of its cycles before the one of the first 3D mesh
+    CommonParameters              plate_prm;
+    std::unique_ptr<MindlinModel> plate;
+    unsigned int                  plate_pre_cycles = 0;
 
     // "Elasticity" subsection
     unsigned int degree;

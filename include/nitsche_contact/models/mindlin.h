@@ -176,7 +176,25 @@ namespace NitscheContact
       bool         multigrid        = false;
       double       krylov_tolerance = 1e-9;
       bool         check_multigrid  = false;
+      /// no warnings on the console (a plate solved inside another model,
+      /// 'Elasticity/Plate predictor')
+      bool         quiet            = false;
+      /// with 'multigrid': the direct solver on meshes with fewer DoFs
+      /// (the plate predictor; its multigrid costs more on small meshes)
+      std::uint64_t multigrid_min_dofs = 0;
     };
+
+    /// The model with the given settings instead of those of the "Mindlin"
+    /// subsection (the plate predictor of the 3D model).
+    MindlinModel(const CommonParameters &common,
+                 const Settings         &settings,
+                 MPI_Comm                comm);
+
+    /// w, phi_x, phi_y and div phi of the current iterate at in-plane
+    /// points (div phi from the cell that locate() finds, so at a vertex
+    /// from one of the cells sharing it); NaN outside the plate.
+    std::vector<std::array<double, 4>>
+    plate_kinematics_at(const std::vector<dealii::Point<2>> &points) const;
 
     /// The assumed (MITC4, MITC9) or plain transverse shear strain gamma =
     /// grad w + phi of a shape function, at a point of the unit cell, on an
@@ -276,6 +294,8 @@ namespace NitscheContact
     /// whether system_matrix is assembled (direct solvers, or the check of
     /// the multigrid)
     bool                                   assembled_matrix = true;
+    /// settings.multigrid on this mesh (multigrid_min_dofs)
+    bool                                   use_multigrid    = false;
     /// the 12 x 16 prolongations from a BFS cell to its child in position
     /// pos = px + 2 py (row: MITC4 local dof; column: BFS local dof 4 v + k)
     std::array<dealii::FullMatrix<double>, 4> child_prolongation;
