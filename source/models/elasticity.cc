@@ -406,8 +406,8 @@ namespace NitscheContact
         "u_alpha = x3 phi_alpha, u3 = w - nu/(1-nu) (x3^2 - t^2/4)/2 div "
         "phi (plane stress through the thickness). Its Newton iterations "
         "and seconds are reported per cycle (the seconds within 'setup'). "
-        "On the paper's thin plate it saves about a third of the 3D Newton "
-        "iterations (doc/benchmarks.md). Needs the uniform mesh (no "
+        "On the paper's thin plate the 3D Newton iterations drop by up to "
+        "a half where the nested start is poor (doc/benchmarks.md). Needs the uniform mesh (no "
         "'Refinement box'), 'Top face = free' and 'Nonlinear solver/Load "
         "steps = 1'; a top tangential traction and friction are left to "
         "the 3D iteration.");
@@ -571,29 +571,29 @@ namespace NitscheContact
   {
     const auto s = number_to_string;
     std::vector<std::pair<std::string, std::string>> d = {
-            {"element", "Q" + std::to_string(degree) + " hexahedra"},
-            {"E", s(prm.youngs_modulus)},
-            {"nu", s(prm.poisson_ratio)},
-            {"thickness", s(prm.thickness)},
-            {"plate", s(prm.length_x) + " x " + s(prm.length_y)},
-            {"edges", to_string(prm.edges[0]) + ", " + to_string(prm.edges[1]) +
-                        ", " + to_string(prm.edges[2]) + ", " +
-                        to_string(prm.edges[3])},
-            {"theta", s(prm.theta)},
-            {"gamma0", s(prm.gamma0)},
-            {"r", "gamma0 E / h_n, h_n = |K|/|F| (cell height normal to the "
-                  "contact face)"},
-            {"friction", s(prm.friction)},
-            {"contact quadrature",
-             std::to_string(contact_quadrature_points) + "x" +
-               std::to_string(contact_quadrature_points) +
-               (contact_rule_name == "lobatto" ? " Gauss-Lobatto" :
-                                                 " Gauss")},
-            {"load", prm.load_expression + (load_as_traction ?
-                                              " (top traction)" :
-                                              " (body force q/t)")},
-            {"obstacle", prm.obstacle_type},
-            {"linear solver", linear_solver}};
+      {"element", "Q" + std::to_string(degree) + " hexahedra"},
+      {"E", s(prm.youngs_modulus)},
+      {"nu", s(prm.poisson_ratio)},
+      {"thickness", s(prm.thickness)},
+      {"plate", s(prm.length_x) + " x " + s(prm.length_y)},
+      {"edges", to_string(prm.edges[0]) + ", " + to_string(prm.edges[1]) +
+                  ", " + to_string(prm.edges[2]) + ", " +
+                  to_string(prm.edges[3])},
+      {"theta", s(prm.theta)},
+      {"gamma0", s(prm.gamma0)},
+      {"r", "gamma0 E / h_n, h_n = |K|/|F| (cell height normal to the "
+            "contact face)"},
+      {"friction", s(prm.friction)},
+      {"contact quadrature",
+       std::to_string(contact_quadrature_points) + "x" +
+         std::to_string(contact_quadrature_points) +
+         (contact_rule_name == "lobatto" ? " Gauss-Lobatto" :
+                                           " Gauss")},
+      {"load", prm.load_expression + (load_as_traction ?
+                                        " (top traction)" :
+                                        " (body force q/t)")},
+      {"obstacle", prm.obstacle_type},
+      {"linear solver", linear_solver}};
     if (plate)
       d.emplace_back("start",
                      "plate predictor (Mindlin MITC4, theta = 1, gamma0 = "
