@@ -687,39 +687,20 @@ namespace NitscheContact
     // the Mindlin kinematics with the plane-stress thickness strain
     // eps33 = -nu/(1-nu) (eps11 + eps22) and u3 = w on the lower face
     // x3 = -eps, where the plate's contact condition holds.
-    const Quadrature<3> support(fe.get_unit_support_points());
-    FEValues<3>         points(mapping, fe, support, update_quadrature_points);
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    std::vector<types::global_dof_index> owned_dofs;
-    std::vector<Point<3>>                where;
-    std::vector<unsigned int>            component;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          points.reinit(cell);
-          cell->get_dof_indices(dofs);
-          for (unsigned int i = 0; i < dofs.size(); ++i)
-            if (locally_owned.is_element(dofs[i]))
-              {
-                owned_dofs.push_back(dofs[i]);
-                where.push_back(points.quadrature_point(i));
-                component.push_back(fe.system_to_component_index(i).first);
-              }
-        }
-    std::vector<Point<2>> in_plane(where.size());
-    for (std::size_t k = 0; k < where.size(); ++k)
-      in_plane[k] = Point<2>(where[k][0], where[k][1]);
+    const std::vector<SupportPoint> support = owned_support_points();
+    std::vector<Point<2>>           in_plane(support.size());
+    for (std::size_t k = 0; k < support.size(); ++k)
+      in_plane[k] = Point<2>(support[k].point[0], support[k].point[1]);
     const auto   kinematics = plate->plate_kinematics_at(in_plane);
     const double nu = prm.poisson_ratio, eps = 0.5 * prm.thickness;
-    solution = 0.;
-    for (std::size_t k = 0; k < where.size(); ++k)
+    for (std::size_t k = 0; k < support.size(); ++k)
       {
-        const auto  &v = kinematics[k];
-        const double z = where[k][2];
-        solution[owned_dofs[k]] =
-          component[k] == 2 ?
-            v[0] - nu / (1. - nu) * 0.5 * (z * z - eps * eps) * v[3] :
-            z * v[1 + component[k]];
+        const auto        &v = kinematics[k];
+        const double       z = support[k].point[2];
+        const unsigned int c = support[k].component;
+        solution[support[k].dof] =
+          c == 2 ? v[0] - nu / (1. - nu) * 0.5 * (z * z - eps * eps) * v[3] :
+                   z * v[1 + c];
       }
     solution.compress(VectorOperation::insert);
     constraints.distribute(solution);
@@ -837,30 +818,47 @@ namespace NitscheContact
     triangulation.clear();
     make_grid(cycle);
     setup_dofs();
-    const Quadrature<3> support(fe.get_unit_support_points());
-    FEValues<3>         new_points(mapping, fe, support, update_quadrature_points);
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          new_points.reinit(cell);
-          cell->get_dof_indices(dofs);
-          for (unsigned int i = 0; i < dofs.size(); ++i)
-            if (locally_owned.is_element(dofs[i]))
-              {
-                const std::size_t l =
-                  lattice_point(new_points.quadrature_point(i));
-                off_lattice = off_lattice || !(values[4 * l + 3] > 0.);
-                solution[dofs[i]] =
-                  values[4 * l + fe.system_to_component_index(i).first] /
-                  std::max(values[4 * l + 3], 1.);
-              }
-        }
+    for (const SupportPoint &p : owned_support_points())
+      {
+        const std::size_t l = lattice_point(p.point);
+        off_lattice         = off_lattice || !(values[4 * l + 3] > 0.);
+        solution[p.dof] =
+          values[4 * l + p.component] / std::max(values[4 * l + 3], 1.);
+      }
     AssertThrow(Utilities::MPI::max(off_lattice ? 1 : 0, comm) == 0,
                 ExcMessage("refining in plane: a support point is not on "
                            "the lattice of the previous mesh"));
     solution.compress(VectorOperation::insert);
     constraints.distribute(solution);
+  }
+
+  std::vector<ElasticityModel::SupportPoint>
+  ElasticityModel::owned_support_points() const
+  {
+    const Quadrature<3> unit(fe.get_unit_support_points());
+    FEValues<3>         values(mapping, fe, unit, update_quadrature_points);
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    std::vector<bool>         seen(locally_owned.n_elements(), false);
+    std::vector<SupportPoint> points;
+    points.reserve(locally_owned.n_elements());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          values.reinit(cell);
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            if (locally_owned.is_element(dofs[i]))
+              {
+                const auto k = locally_owned.index_within_set(dofs[i]);
+                if (seen[k])
+                  continue;
+                seen[k] = true;
+                points.push_back({dofs[i],
+                                  values.quadrature_point(i),
+                                  fe.system_to_component_index(i).first});
+              }
+        }
+    return points;
   }
 
   void

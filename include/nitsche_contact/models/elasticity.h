@@ -202,6 +202,15 @@ namespace NitscheContact
     /// (its parameters in plate_prm), and lift its solution to the start U
     void
     make_plate_predictor();
+    /// every locally owned DoF once, with its support point and component
+    struct SupportPoint
+    {
+      dealii::types::global_dof_index dof;
+      dealii::Point<3>                point;
+      unsigned int                    component;
+    };
+    std::vector<SupportPoint>
+    owned_support_points() const;
     void
     lift_plate_solution();
 
