@@ -550,15 +550,28 @@ namespace NitscheContact
     // the predictor's iterations are this cycle's start, not its work: a
     // record of their own, and no console lines but one per cycle
     const bool print = pcout.is_active();
+    // the frictionless plate of a frictional run (the stagnation and
+    // exact-step tests depend on the stage's friction)
+    stage_friction = 0.;
+    stage_suffix.clear();
     for (const unsigned int k : cycles)
       {
-        CycleRecord own;
-        own.cycle = k;
-        records.push_back(own);
         bool       converged = false;
         PhaseTimes t;
         Timer      timer;
-        predictor.setup_cycle(k);
+        try
+          {
+            predictor.setup_cycle(k);
+          }
+        catch (const InputError &e)
+          {
+            throw InputError(std::string(e.what()) + " [found by the "
+                             "predictor '" + predictor.name() +
+                             "' on its cycle " + std::to_string(k) + "]");
+          }
+        CycleRecord own;
+        own.cycle = k;
+        records.push_back(own);
         solving_predictor = true;
         pcout.set_condition(false);
         unsigned int iterations = 0;
@@ -588,14 +601,18 @@ namespace NitscheContact
           {
             const std::string what =
               "the predictor '" + predictor.name() + "' ('Elasticity/Plate "
-              "predictor') did not converge in " +
-              std::to_string(iterations) + " iterations on its cycle " +
+              "predictor') did not converge on its cycle " +
               std::to_string(k) + " (" + std::to_string(predictor.n_dofs()) +
-              " DoFs)";
+              " DoFs): " +
+              (stagnation.empty() ?
+                 "no convergence in " + std::to_string(iterations) +
+                   " iterations (raise 'Nonlinear solver/Maximum "
+                   "iterations')" :
+                 stagnation);
             if (!prm.allow_non_convergence)
               throw ConvergenceFailure(
-                what + "; raise 'Nonlinear solver/Maximum iterations' or set "
-                       "'Plate predictor = false'");
+                what + "; or set 'Plate predictor = false' [summary.json "
+                       "holds the cycles before it]");
             pcout << "  warning: " << what
                   << "; starting from its last iterate as 'Allow "
                      "non-convergence' asks"
@@ -680,7 +697,16 @@ namespace NitscheContact
         try
           {
             if (ContactModel *p = model.predictor())
-              solve_predictor(*p, model.predictor_cycles(cycle), rec);
+              try
+                {
+                  solve_predictor(*p, model.predictor_cycles(cycle), rec);
+                }
+              catch (const ConvergenceFailure &)
+                {
+                  write_tables();
+                  write_summary(model);
+                  throw;
+                }
             model.setup_cycle(cycle);
           }
         catch (const InputError &e)

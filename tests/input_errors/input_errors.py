@@ -143,6 +143,9 @@ CASES = [
      ["Nonlinear solver/Tolerance", "'0'", "(0, 1)"]),
     ("tolerance = 2", "subsection Nonlinear solver\n  set Tolerance = 2\nend",
      ["Nonlinear solver/Tolerance", "'2'", "(0, 1)"]),
+    # the boundary (found by the mutation review of session 21)
+    ("tolerance = 1", "subsection Nonlinear solver\n  set Tolerance = 1\nend",
+     ["Nonlinear solver/Tolerance", "'1'", "(0, 1)"]),
     ("trailing comma in the load constants",
      "subsection Load\n  set Function constants = q0=1,\nend",
      ["Load/Function constants", "q0=1,", "an empty pair"]),

@@ -149,6 +149,11 @@ for degree in (1, 2):
                     check(c["extra"]["max_friction_ratio"] <= TOL,
                           tag + " |Lambda_t|/|Lambda_n| = %.2e == 0"
                           % c["extra"]["max_friction_ratio"])
+                    # the whole face (area 1) sticks
+                    check(abs(c["extra"]["stick_area"] - 1.0) <= TOL and
+                          c["extra"]["slip_area"] == 0.,
+                          tag + " stick area %.12g == 1, slip area %g == 0"
+                          % (c["extra"]["stick_area"], c["extra"]["slip_area"]))
 
 # In-plane refinement ('Refine through thickness = false'): the nested start
 # carried to the next mesh through the lattice of support points must be the

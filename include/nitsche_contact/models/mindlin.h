@@ -191,8 +191,8 @@ namespace NitscheContact
                  MPI_Comm                comm);
 
     /// w, phi_x, phi_y and div phi of the current iterate at in-plane
-    /// points (div phi from the cell that locate() finds, so at a vertex
-    /// from one of the cells sharing it); NaN outside the plate.
+    /// points (div phi, discontinuous across cell sides, as the mean over
+    /// the cells around the point); NaN outside the plate.
     std::vector<std::array<double, 4>>
     plate_kinematics_at(const std::vector<dealii::Point<2>> &points) const;
 
