@@ -8,7 +8,11 @@ Then a compliant obstacle (kappa > 0) above the simply supported edges: an
 elastic (Winkler) foundation whose level psi = 1 lies above the supports
 w = 0, which the input check of rigid obstacles must let through. With q = 0
 the plate touches everywhere (psi - w > 0), so D Delta^2 w + w / kappa =
-psi / kappa, whose Navier series is evaluated here."""
+psi / kappa, whose Navier series is evaluated here.
+
+The reported GSV parameter r = 1/(alpha h_K^4) (h_K the longest cell side)
+and the load integral load_total are checked on square and on 1/32 x 1/16
+cells against their closed forms."""
 import math
 import os, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -28,6 +32,17 @@ for name, edges, ref in cases:
               "%s theta=%d: converged without contact" % (name, theta))
         close(c["probes"][0], ref, 5e-6, "%s theta=%d centre deflection w D/(q a^4)" % (name, theta))
         close(c["max_deflection"], ref, 5e-6, "%s theta=%d max deflection" % (name, theta))
+        close(c["extra"]["load_total"], 1.0, 1e-12, "%s theta=%d: load_total = q a^2 = 1" % (name, theta))
+        close(c["extra"]["r"], 1 / (1e-4 * (1 / 32) ** 4), 1e-12,
+              "%s theta=%d: GSV r = 1/(alpha h^4), h = 1/32" % (name, theta))
+
+# Cells of 1/32 x 1/16: the GSV scale h_K is the longest side, and the
+# integral of the load q = x is 1/2 (summary 'extra' r and load_total).
+s, _ = run(args, "rectangular_cells", plate_prm(sub=(32, 16), load="x"))
+c = s["cycles"][-1]
+check(c["converged"], "32 x 16 cells: converged")
+close(c["extra"]["r"], 1 / (1e-4 * (1 / 16) ** 4), 1e-12, "32 x 16 cells: r = 1/(alpha h_K^4), h_K = 1/16")
+close(c["extra"]["load_total"], 0.5, 1e-12, "32 x 16 cells: load_total = integral of x = 1/2")
 
 
 def foundation(x, y, psi=1.0, kappa=1e-2, n_terms=200):
