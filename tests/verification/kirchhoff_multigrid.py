@@ -7,7 +7,7 @@ spaces) against two independent sources:
    only w and its tangential derivative, so they test the level constraints;
  - the sparse direct solver of the program on contact problems: theta = 1
    (symmetric Jacobian, CG) and theta = 0 (nonsymmetric, GMRES) on a
-   non-square plate (rectangular level hierarchy) with clamped, simply
+   non-square plate with 2:1 cells (rectangular level hierarchy) with clamped, simply
    supported and symmetry edges, nested iteration over two cycles. The
    solutions must agree to 1e-7 (relative) in contact force and
    probe deflections, with the same active set: the Newton iterations see
@@ -51,9 +51,11 @@ for name, edges, ref in cases:
           "%s: %.1f Krylov iterations per Newton step" % (name, average_krylov(c)))
 
 probes = "0.5, 0.5; 0.2, 0.5; 0.1, 0.1; 1.5, 0.5"
-# 32x16 cells: one coarse level on cycle 0, two on cycle 1, so the level
-# updates pass through an intermediate level; one symmetry edge
-base = dict(lx=2.0, ly=1.0, sub=(32, 16), cycles=2, load=-1, level=-5e-4, probes=probes,
+# 32x32 cells of 1/16 x 1/32 (2:1: the cell prolongation and the coarse
+# cell sizes differ per direction; a review's mutation of the coarse size
+# passed on square cells): one coarse level on cycle 0, two on cycle 1, so
+# the level updates pass through an intermediate level; one symmetry edge
+base = dict(lx=2.0, ly=1.0, sub=(32, 32), cycles=2, load=-1, level=-5e-4, probes=probes,
             edges="clamped, simply supported, symmetry, clamped")
 for theta, alpha, kappa in ((1, 1e-4, 0.0), (0, 1e-4, 0.0), (1, 0, 1e-5)):
     tag = "theta%d" % theta if alpha > 0 else "penalty"
