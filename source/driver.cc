@@ -116,8 +116,9 @@ namespace NitscheContact
     converged            = false;
     // Upper bounds of J at the iterates of this solve, one per iterate,
     // for the non-monotone acceptance of full Newton steps below. Only on
-    // nested cycles: from a cold start (cycle 0) the rule gave as many or
-    // more iterations (doc/design.md).
+    // nested cycles and on cycles started from a predictor: from a cold
+    // start (cycle 0) the rule gave as many or more iterations
+    // (doc/design.md).
     const bool nonmonotone = prm.nonmonotone_window > 0 && prm.line_search &&
                              (cycle > 0 || warm_start);
     std::vector<double> energies;
