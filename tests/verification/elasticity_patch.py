@@ -21,8 +21,9 @@ theta, gamma0 and mesh. Checked per run: L2 and H1 errors (from the program's
 the nodal error relative to max |u|, all <= 1e-10 (H1: <= 1e-7, because
 deal.II's FunctionParser differentiates the exact solution by finite
 differences, which alone costs ~3e-9); contact force = p * area
-and contact area = 1 to 1e-10; every contact point active; with friction
-every contact point sticks and |Lambda_t| = 0.
+and contact area = 1 to 1e-10; every contact point active; the probe at
+(0.5, 0.5) (u3 on the mid-plane) equals -b/2; with friction every contact
+point sticks (stick area 1, slip area 0) and |Lambda_t| = 0.
 
 A wrong sign or a missing term in the Nitsche kernel, a wrong h_n in r when
 the solution is not exact, a wrong traction or a wrong symmetry condition
@@ -142,6 +143,10 @@ for degree in (1, 2):
                       abs(c["min_deflection"] + b) <= TOL * b,
                       tag + " u3 in [%.12g, %.3g] == [-%.12g, 0]"
                       % (c["min_deflection"], c["max_deflection"], b))
+                # the probe is u3 on the mid-plane z = 0: -b/2
+                check(abs(c["probes"][0] + 0.5 * b) <= TOL * b,
+                      tag + " probe (0.5, 0.5) on the mid-plane %.12g == -b/2 = %.12g"
+                      % (c["probes"][0], -0.5 * b))
                 if F > 0:
                     check(c["stick_points"] == c["contact_points"],
                           tag + " all points stick (%d of %d)"
