@@ -32,9 +32,17 @@ The paper's fixed point with partial slip is printed for information: it
 freezes the slip direction and threshold (Tresca-like), so it carries no
 tangential stiffness at sliding points and, here, does not converge or
 meets a singular frozen system (exit status 2) once slip occurs.
+The partial-slip runs with theta = 1 and Q1 also write the contact-face
+VTU: its face means 'tangential_stress' (|Lambda_t|) and
+'contact_pressure' obey the Coulomb law face by face (mean |Lambda_t| <=
+F mean |Lambda_n|), integrate to p A and to the summary's
+tangential_force, which lies in [s A, F p A] (float32: 1e-5).
 Runtime ~15 s in Release.
 """
-from common import parse_args, run, check, finish, sliding_block_prm
+import os
+import re
+from common import (parse_args, run, check, finish, sliding_block_prm, read_vtu,
+                    integrate_patch_field)
 
 args = parse_args()
 
@@ -91,12 +99,52 @@ a, b = newton["cycles"][-1]["probes"][0], fixed["cycles"][-1]["probes"][0]
 check(abs(a - b) <= 1e-9 * abs(a),
       "s/(Fp)=0.5: fixed point = Newton (mid-plane u3 %.12g vs %.12g)" % (b, a))
 
+
+
+def check_vtu(ratio, tag):
+    """The contact-face VTU of the last run: its face means of |Lambda_t|
+    ('tangential_stress') and of -Lambda_n ('contact_pressure') obey the
+    Coulomb law face by face (a mean of |Lambda_t| <= F |Lambda_n| is at
+    most F times the mean of |Lambda_n|), and their integrals are
+    bracketed by the equilibrium values: s A <= integral |Lambda_t| <= F p A
+    and integral of the pressure = p A (float32 output: 1e-5)."""
+    s = ratio * F * P
+    directory = os.path.join(args.workdir, name(ratio))
+    pieces = [read_vtu(os.path.join(directory, f)) for f in sorted(os.listdir(directory))
+              if re.match(r"contact-\d+\.\d+\.vtu$", f)]
+    check(len(pieces) == 1, tag + " one contact-face VTU piece (%d)" % len(pieces))
+    if not pieces:
+        return
+    tangential = sum(integrate_patch_field(a, "tangential_stress")[0] for a in pieces)
+    pressure = sum(integrate_patch_field(a, "contact_pressure")[0] for a in pieces)
+    check(abs(pressure - P * AREA) <= 1e-5 * P * AREA,
+          tag + " VTU contact_pressure integrates to p A: %.7g" % pressure)
+    check(s * AREA * (1 - 1e-5) <= tangential <= F * P * AREA * (1 + 1e-5),
+          tag + " s A = %g <= VTU integral of tangential_stress %.7g <= F p A = %g"
+          % (s * AREA, tangential, F * P * AREA))
+    worst = max(t - F * p for a in pieces
+                for t, p in zip(a["tangential_stress"][0], a["contact_pressure"][0]))
+    check(worst <= 1e-5 * F * P,
+          tag + " VTU tangential_stress <= F contact_pressure on every face "
+          "(largest excess %.3g)" % worst)
+    return tangential
+
+
 # partial slip, all theta, and close to the threshold
 for ratio, theta, degree in ((0.9, 1, 1), (0.9, 0, 1), (0.9, -1, 1), (0.9, 1, 2),
                              (0.98, 1, 1)):
-    s, _ = run(args, name(ratio, theta, degree), prm(ratio, theta, degree))
-    check_equilibrium(s["cycles"][-1], ratio,
-                      "s/(Fp)=%g theta=%+d Q%d:" % (ratio, theta, degree), True)
+    vtu = (theta, degree) == (1, 1)
+    s, _ = run(args, name(ratio, theta, degree), prm(ratio, theta, degree),
+               output_format="vtu" if vtu else "none")
+    tag = "s/(Fp)=%g theta=%+d Q%d:" % (ratio, theta, degree)
+    check_equilibrium(s["cycles"][-1], ratio, tag, True)
+    if vtu:
+        tangential = check_vtu(ratio, tag)
+        if tangential is not None:
+            ex = s["cycles"][-1]["extra"]
+            check(abs(tangential - ex["tangential_force"]) <= 1e-5 * ex["tangential_force"],
+                  tag + " VTU integral of tangential_stress %.7g == summary "
+                  "tangential_force %.7g" % (tangential, ex["tangential_force"]))
 
 # above the threshold: no equilibrium exists
 for ratio in (1.02, 1.2):

@@ -17,6 +17,9 @@ Independent sources (doc/theory.md section 6.2):
   the clamped t/a = 0.001 deflection within 1e-4 of Kirchhoff's, and the
   exact solution below with the rates 3, 2, 3, 2 at t/a = 0.1 and 0.001
   (no locking in the rates either).
+- the error norms: with no load (zero solution) against a polynomial
+  reference, the reported L2/H1 errors of w and phi are its norms in
+  closed form (1e-7), MITC4 and MITC9.
 The obstacle is placed far below (no contact); theta = 0 except in the last
 check. E = 12 (1 - nu^2) / t^3 gives D = 1, a = 1, q = 1."""
 from common import parse_args, run, check, close, finish, first_corrections
@@ -180,6 +183,54 @@ for t in (0.1, 0.001):
               "%.3f (expected %d)" % (t, name, got, rate))
     close(-c["probes"][0], A, 1e-5, "MITC9 exact solution t/a=%g: centre "
           "deflection" % t)
+
+# The error norms themselves: with no load the discrete solution is exactly
+# zero, so against the reference (w, phi_x, phi_y) = (a x y, b x^2, c x y)
+# on [0,1] x [0,2] the reported errors are the norms of that polynomial,
+# in closed form (the rates above cannot see a wrong component or a
+# missing term in a norm).
+a, b, c, Lx, Ly = 0.3, -0.7, 1.1, 1.0, 2.0
+
+
+def monomial(px, py):
+    """integral of x^px y^py over [0,Lx] x [0,Ly]"""
+    return Lx ** (px + 1) / (px + 1) * Ly ** (py + 1) / (py + 1)
+
+
+norms = {"L2(w)": math.sqrt(a * a * monomial(2, 2)),
+         "H1(w)": math.sqrt(a * a * (monomial(0, 2) + monomial(2, 0))),
+         "L2(phi)": math.sqrt(b * b * monomial(4, 0) + c * c * monomial(2, 2)),
+         "H1(phi)": math.sqrt(4 * b * b * monomial(2, 0)
+                              + c * c * (monomial(0, 2) + monomial(2, 0)))}
+for shear in ("MITC4", "MITC9"):
+    s, _ = run(args, "mindlin_error_norms_" + shear, """
+set Model = mindlin
+subsection Geometry
+  set Length x = 1
+  set Length y = 2
+  set Thickness = 0.1
+  set Edge conditions = clamped, clamped, clamped, clamped
+  set Subdivisions = 3, 4
+end
+subsection Load
+  set Transverse load = 0
+end
+subsection Obstacle
+  set Level = -1e10
+end
+subsection Mindlin
+  set Shear treatment = %s
+end
+subsection Reference solution
+  set Exact solution = a*x*y; b*x*x; c*x*y
+  set Function constants = a=%r, b=%r, c=%r
+end
+""" % (shear, a, b, c))
+    errors = s["cycles"][-1]["errors"]
+    for name, value in norms.items():
+        # (the exact gradients come from FunctionParser's finite differences)
+        close(errors[name], value, 1e-7,
+              "%s, zero solution: error %s = the norm of the reference" % (shear, name))
 
 # MITC9 against the closed form (hard SS) and Kirchhoff (clamped, thin).
 for t in (0.1, 0.01, 0.001):
