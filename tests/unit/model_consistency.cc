@@ -10,6 +10,8 @@
 //     (stick and slip points, theta = 1, 0, -1; with 'Stick step on slip
 //     reversal = false', since that option replaces the Jacobian rows of
 //     points whose slip reversed by those of the stick branch);
+//     (checks 1 and 2 cannot see a wrong term that is consistently wrong
+//     in R and K; checks 3 and 4 below compare with closed forms);
 //  2. where energy() is defined (theta = 1 frictionless, and the pure
 //     penalty), dJ/dt along d equals R.d: (J(U + s d) - J(U - s d)) / (2s)
 //     against R(U).d (relative 1e-6), for d random and d = the Newton
@@ -17,10 +19,20 @@
 // The numbers are computed from the program's own residual, so the check is
 // independent of any reference solution: it tests that K and J are the
 // derivative and the potential of R.
+//  3. Nitsche's consistency with Coulomb friction (3D model): at an exact
+//     uniform-stress state with u = 0 on the contact face, every contact
+//     point is active and sticks, Lambda = sigma(u) n and all theta-terms
+//     cancel, so R(U) vanishes at every DoF off the top and lateral faces
+//     (closed form: the residual is the traction mismatch on those faces);
+//  4. the Mindlin membrane stiffness: U^T K U of a homogeneous membrane
+//     strain against the plane-stress energy
+//     Dm ((1 - nu) eps:eps + nu tr(eps)^2) |A|, Dm = E t / (1 - nu^2).
 #include <deal.II/base/logstream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/function.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/mapping_q1.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <nitsche_contact/model_factory.h>
@@ -30,8 +42,10 @@
 #include <nitsche_contact/parameters.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
+#include <iostream>
 #include <limits>
 #include <random>
 #include <string>
@@ -302,6 +316,182 @@ namespace
       out << "  relative errors " << err_n << ", " << err_t << ", " << err_q
           << std::endl;
   }
+
+  // Check 3. Block [0,1]^2 x (-1/2, 1/2), E = 100, nu = 0.3, rigid plane at
+  // the bottom face (gap 0), F = 0.5, no load, free lateral faces. The
+  // state u = (z + 1/2) c, c = (0.005, -0.003, -0.01), is in Q1 and Q2 and
+  // has the uniform stress sigma_13 = mu c1, sigma_23 = mu c2, sigma_33 =
+  // (lambda + 2 mu) c3, sigma_11 = sigma_22 = lambda c3. On the bottom face
+  // u = 0 = g, sigma_n = (lambda + 2 mu) c3 < 0 (active), q = sigma_t with
+  // |sigma_t| = 0.22 < F |sigma_n| = 0.67 (stick), so the Nitsche stresses
+  // are Lambda_n = sigma_n, Lambda_t = sigma_t and the theta-terms
+  // -(theta/r) sigma(u).sigma(v) + (theta/r) Lambda.sigma(v) cancel. The
+  // bulk term of a uniform stress integrates to the traction sigma n . v on
+  // the boundary, which the contact term -Lambda.v cancels on the bottom
+  // face: R(U)_i = 0 for every DoF i whose support point is neither on the
+  // top nor on a lateral face, for every theta. A theta-term with a wrong
+  // sign or factor (normal or tangential) leaves (theta/r) sigma.sigma(v)
+  // there, of relative size ~1e-2 here.
+  class UniformStressState : public Function<3>
+  {
+  public:
+    UniformStressState(const Tensor<1, 3> &c)
+      : Function<3>(3)
+      , c(c)
+    {}
+    double
+    value(const Point<3> &p, const unsigned int i) const override
+    {
+      return c[i] * (p[2] + 0.5);
+    }
+    Tensor<1, 3> c;
+  };
+
+  void
+  check_elasticity_friction_consistency()
+  {
+    const Tensor<1, 3> c({0.005, -0.003, -0.01});
+    for (const unsigned int degree : {1u, 2u})
+      for (const int theta : {1, 0, -1})
+        {
+          const std::string name = "elasticity friction consistency Q" +
+                                   std::to_string(degree) +
+                                   " theta=" + std::to_string(theta);
+          ParameterHandler prm;
+          CommonParameters::declare(prm);
+          declare_model_parameters(prm);
+          prm.parse_input_from_string(
+            "set Model = elasticity\n"
+            "subsection Geometry\n  set Length x = 1\n  set Length y = 1\n"
+            "  set Thickness = 1\n"
+            "  set Edge conditions = free, free, free, free\n"
+            "  set Subdivisions = 3, 2, 2\nend\n"
+            "subsection Material\n  set Young's modulus = 100\n"
+            "  set Poisson ratio = 0.3\nend\n"
+            "subsection Load\n  set Transverse load = 0\nend\n"
+            "subsection Obstacle\n  set Type = plane\n  set Level = -0.5\nend\n"
+            "subsection Contact\n  set Nitsche theta = " +
+            std::to_string(theta) +
+            "\n  set Nitsche gamma0 = 20\n"
+            "  set Friction coefficient = 0.5\nend\n"
+            "subsection Elasticity\n  set Polynomial degree = " +
+            std::to_string(degree) +
+            "\n  set Linear solver = direct\nend\n"
+            "subsection Output\n  set Format = none\n"
+            "  set Directory = output-dir\nend\n");
+          CommonParameters common;
+          common.parse(prm);
+          auto base_model = create_model(common, prm, MPI_COMM_WORLD);
+          ElasticityModel &model =
+            dynamic_cast<ElasticityModel &>(*base_model);
+          model.setup_cycle(0);
+          VectorTools::interpolate(model.get_dof_handler(),
+                                   UniformStressState(c),
+                                   model.iterate());
+          const ContactCounts counts =
+            model.assemble(NonlinearScheme::newton, false);
+          const auto &R = model.negative_residual();
+          std::vector<Point<3>> support(model.get_dof_handler().n_dofs());
+          DoFTools::map_dofs_to_support_points(MappingQ1<3>(),
+                                               model.get_dof_handler(),
+                                               support);
+          double        inner = 0., all = 0.;
+          unsigned int n_bottom = 0;
+          for (unsigned int i = 0; i < support.size(); ++i)
+            {
+              const Point<3> &p = support[i];
+              all               = std::max(all, std::abs(R(i)));
+              const bool outer  = p[0] < 1e-12 || p[0] > 1 - 1e-12 ||
+                                 p[1] < 1e-12 || p[1] > 1 - 1e-12 ||
+                                 p[2] > 0.5 - 1e-12;
+              if (outer)
+                continue;
+              inner = std::max(inner, std::abs(R(i)));
+              if (p[2] < -0.5 + 1e-12)
+                ++n_bottom;
+            }
+          out << name << ": " << counts.n_stick << " of " << counts.n_points
+              << " contact points stick: "
+              << (counts.n_stick == counts.n_points && counts.n_slip == 0 ?
+                    "ok" :
+                    "FAILED")
+              << std::endl;
+          // (all > 0: the lateral and top faces carry the traction mismatch)
+          const double rel = inner / all;
+          out << name << ": R(U) = 0 off the top and lateral faces ("
+              << (n_bottom > 0 ? "incl. contact-face DoFs" : "NO contact-face DoFs")
+              << "): " << (rel <= 1e-10 && all > 0. ? "ok" : "FAILED")
+              << std::endl;
+          if (!(rel <= 1e-10))
+            out << "  max |R_i| there / max |R_i| = " << rel << std::endl;
+          // the margin, on the console only (not part of the output file)
+          std::cout << name << ": max |R_i| off the top and lateral faces / "
+                    << "max |R_i| = " << rel << " (bound 1e-10)" << std::endl;
+        }
+  }
+
+  // Check 4. Free Mindlin square 10 x 10, t = 0.01, E = 2e5, nu = 0.3,
+  // membrane unknowns, theta = 0 (no theta-terms), obstacle far below (all
+  // contact points inactive), no load. U: w = 0, phi = 0, ubar = (m1 x +
+  // m3 y, m4 x + m2 y), a homogeneous membrane strain that Q1 represents
+  // exactly; the bulk quadrature is exact, so -U.R(U) = U^T K U =
+  // Dm ((1 - nu) eps:eps + nu tr(eps)^2) |A| with eps = [[m1, (m3+m4)/2],
+  // [(m3+m4)/2, m2]]. Two states: a deviatoric one (tr eps = 0, only the
+  // (1 - nu) term) and a general one.
+  void
+  check_mindlin_membrane_energy()
+  {
+    const double E = 2e5, nu = 0.3, t = 0.01, area = 100.;
+    const double Dm = E * t / (1 - nu * nu);
+    ParameterHandler prm;
+    CommonParameters::declare(prm);
+    declare_model_parameters(prm);
+    prm.parse_input_from_string(
+      "set Model = mindlin\n"
+      "subsection Geometry\n  set Length x = 10\n  set Length y = 10\n"
+      "  set Thickness = 0.01\n  set Edge conditions = free, free, free, free\n"
+      "  set Subdivisions = 3, 2\nend\n"
+      "subsection Load\n  set Transverse load = 0\nend\n"
+      "subsection Obstacle\n  set Level = -1\nend\n"
+      "subsection Contact\n  set Nitsche theta = 0\n"
+      "  set Friction coefficient = 0\nend\n"
+      "subsection Mindlin\n  set Membrane unknowns = true\nend\n"
+      "subsection Output\n  set Format = none\n  set Directory = output-dir\nend\n");
+    CommonParameters common;
+    common.parse(prm);
+    auto          base_model = create_model(common, prm, MPI_COMM_WORLD);
+    MindlinModel &model      = dynamic_cast<MindlinModel &>(*base_model);
+    model.setup_cycle(0);
+    double err = 0.;
+    for (const std::array<double, 4> m :
+         {std::array<double, 4>{{2e-4, -2e-4, 1e-4, 3e-4}},
+          std::array<double, 4>{{2e-4, 5e-4, -1e-4, 3e-4}}})
+      {
+        VectorTools::interpolate(model.get_dof_handler(),
+                                 PlateField({0, 0, 0, 0, 0, 0, 0, 0, 0,
+                                             0, m[0], m[2], 0, m[3], m[1]}),
+                                 model.iterate());
+        const ContactCounts counts =
+          model.assemble(NonlinearScheme::newton, false);
+        const double e12 = 0.5 * (m[2] + m[3]);
+        const double exact =
+          Dm * area *
+          ((1 - nu) * (m[0] * m[0] + m[1] * m[1] + 2 * e12 * e12) +
+           nu * (m[0] + m[1]) * (m[0] + m[1]));
+        const double uku = -(model.negative_residual() * model.iterate());
+        err = std::max(err, std::abs(uku - exact) / exact +
+                              (counts.n_active > 0 ? 1. : 0.));
+        std::cout << "mindlin membrane: U^T K U = " << uku << ", closed form "
+                  << exact << " (relative error "
+                  << std::abs(uku - exact) / exact << ", bound 1e-10)"
+                  << std::endl;
+      }
+    out << "mindlin membrane: U^T K U = Dm ((1-nu) eps:eps + nu tr(eps)^2) "
+           "|A|: "
+        << (err <= 1e-10 ? "ok" : "FAILED") << std::endl;
+    if (err > 1e-10)
+      out << "  relative error " << err << std::endl;
+  }
 } // namespace
 
 int
@@ -341,6 +531,7 @@ main(int argc, char **argv)
                               prm_text("mindlin", theta, 0.2, ""),
                               12);
   check_mindlin_kinematics();
+  check_mindlin_membrane_energy();
   // 3D: the paper's plate on 6 x 6 x 1 Q2 cells; its bottom face reaches
   // the obstacle after a few full Newton steps
   for (const double theta : {1., 0., -1.})
@@ -352,5 +543,6 @@ main(int argc, char **argv)
                                    std::to_string(int(theta)),
                                  prm_text("elasticity", theta, 0.2, ""),
                                  12);
+  check_elasticity_friction_consistency();
   return 0;
 }

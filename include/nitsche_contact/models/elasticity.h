@@ -129,6 +129,13 @@ namespace NitscheContact
     {
       return constraints;
     }
+    /// For tests: the DoF handler of the current mesh (to interpolate
+    /// prescribed fields into iterate()).
+    const dealii::DoFHandler<3> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
 
   private:
     /// The mesh of a cycle, in the empty triangulation: the coarse box mesh
