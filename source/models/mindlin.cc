@@ -154,9 +154,10 @@ namespace NitscheContact
         Patterns::Selection("thickness|cell size"),
         "h_n in r = gamma0 E / h_n: 'thickness' (default; theta = 1 is then "
         "coercive for gamma0 > 1.4 with MITC4, the default contact points "
-        "and no membrane unknowns, 0.909 on clamped plates; more with the "
-        "vertex rule, membrane unknowns or MITC9, e.g. 1.6 to about 2.3 for "
-        "MITC9 with 3x3 Gauss-Lobatto points; doc/mindlin.md) or 'cell size' (largest "
+        "and no membrane unknowns, 0.909 on clamped plates; more with "
+        "membrane unknowns or with vertex contact points, which "
+        "over-integrate (div phi)^2, e.g. 1.6 to about 2.3 for MITC9 with "
+        "3x3 Gauss-Lobatto points; doc/mindlin.md) or 'cell size' (largest "
         "cell side; needs gamma0 > 44 for theta = 1 on the paper's mesh; "
         "for MITC9 the side of the Q2 cell, twice its node spacing, so "
         "on the same nodes r is half that of MITC4 and the theta-term bias "

@@ -329,9 +329,11 @@ namespace
   // bulk term of a uniform stress integrates to the traction sigma n . v on
   // the boundary, which the contact term -Lambda.v cancels on the bottom
   // face: R(U)_i = 0 for every DoF i whose support point is neither on the
-  // top nor on a lateral face, for every theta. A theta-term with a wrong
-  // sign or factor (normal or tangential) leaves (theta/r) sigma.sigma(v)
-  // there, of relative size ~1e-2 here.
+  // top nor on a lateral face, for every theta. A wrong sign or factor in
+  // one term of a theta-pair (normal or tangential) leaves a multiple of
+  // (theta/r) sigma.sigma(v) there, of relative size ~1e-2 here; a factor
+  // shared by both terms of a pair, or a wrong r, is invisible at this
+  // exact state (the finite-difference checks above see those).
   class UniformStressState : public Function<3>
   {
   public:
@@ -525,6 +527,12 @@ main(int argc, char **argv)
   for (const double theta : {1., 0., -1.})
     check_model<MindlinModel>("mindlin theta=" + std::to_string(int(theta)),
                               prm_text("mindlin", theta, 0., ""));
+  // membrane unknowns without friction: theta = 1 has an energy, so the
+  // dJ/dt check compares energy()'s membrane term with the residual's
+  check_model<MindlinModel>(
+    "mindlin membrane theta=1",
+    prm_text("mindlin", 1., 0.,
+             "subsection Mindlin\n  set Membrane unknowns = true\nend\n"));
   for (const double theta : {1., 0., -1.})
     check_model<MindlinModel>("mindlin friction 0.2 theta=" +
                                 std::to_string(int(theta)),

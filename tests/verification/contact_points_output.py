@@ -24,9 +24,10 @@ nonlinear_iterations - 1), each against the iteration log of the driver:
 its active rows are the 'contact A/B' of the line 'iteration KKK+1', and
 the points whose status differs from file KKK-1 are that line's
 'changed' count.
-The 3D Nitsche parameter on cells taller than wide (an unloaded block
-above a plane: s_n = r g at every point, r = gamma0 E / h_n with h_n the
-cell height 2 and 2/3, not its width 0.5).
+The 3D Nitsche parameter on cells taller and flatter than wide (an
+unloaded block above a plane: s_n = r g at every point, r = gamma0 E / h_n
+with h_n the cell height 2, 2/3 and 0.2, not its width 0.5 or its largest
+side).
 Finally parameters/plot_contact_points.py draws two of the files, and
 with --against the status changes of two iterates."""
 import csv, os, re, sys
@@ -176,17 +177,18 @@ for c in (0, 1):
     check(same, "elasticity cycle %d: the same points, statuses and pressures on 1 and 2 ranks" % c)
 
 # The 3D Nitsche parameter r = gamma0 E / h_n with h_n the height of the
-# cell normal to the contact face (|K| / |F|), on cells taller than wide:
-# an unloaded clamped block 1 x 1 x 2 held 0.1 above a plane stays at
-# u = 0, so every contact point is inactive with s_n = sigma_n - r (u_n - g)
-# = r g exactly; with 2 x 2 x L cells (0.5 wide, 2 / L high) r must be
-# gamma0 E L / 2, not built on the width (0.5) or the diameter.
+# cell normal to the contact face (|K| / |F|), on cells taller and flatter
+# than wide: an unloaded clamped block 1 x 1 x T held 0.1 above a plane
+# stays at u = 0, so every contact point is inactive with s_n = sigma_n -
+# r (u_n - g) = r g exactly; with 2 x 2 x L cells (0.5 wide, T / L high)
+# r must be gamma0 E L / T, not built on the width (0.5), the largest side
+# or the diameter.
 TALL = """
 set Model = elasticity
 subsection Geometry
   set Length x = 1
   set Length y = 1
-  set Thickness = 2
+  set Thickness = %r
   set Edge conditions = clamped, clamped, clamped, clamped
   set Subdivisions = 2, 2, %d
 end
@@ -197,7 +199,7 @@ subsection Load
   set Transverse load = 0
 end
 subsection Obstacle
-  set Level = -1.1
+  set Level = %r
 end
 subsection Contact
   set Nitsche gamma0 = 20
@@ -209,16 +211,16 @@ subsection Output
   set Contact points = true
 end
 """
-for layers, degree in ((1, 2), (3, 1)):
-    name = "tall_cells_%d_Q%d" % (layers, degree)
-    run(args, name, TALL % (layers, degree))
+for thickness, layers, degree in ((2.0, 1, 2), (2.0, 3, 1), (0.2, 1, 2)):
+    name = "cell_height_%g_%d_Q%d" % (thickness, layers, degree)
+    run(args, name, TALL % (thickness, layers, -thickness / 2 - 0.1, degree))
     with open(os.path.join(args.workdir, name, "contact_points-00.csv")) as f:
         pts = [{k: float(v) for k, v in row.items()} for row in csv.DictReader(f)]
-    r = 20 * 100 / (2.0 / layers)
+    r = 20 * 100 / (thickness / layers)
     check(len(pts) > 0 and all(p["status"] == 0 and abs(p["gap"] - 0.1) <= 1e-12 and
                                abs(p["s_n"] - r * 0.1) <= 1e-9 * r for p in pts),
           "3D cells 0.5 x 0.5 x %.4g, Q%d: s_n = r g at all %d points with r = gamma0 E / h_n "
-          "= %g (h_n = the cell height)" % (2.0 / layers, degree, len(pts), r))
+          "= %g (h_n = the cell height)" % (thickness / layers, degree, len(pts), r))
 
 # The plotting tool of the parameters/ directory draws these files.
 import subprocess
