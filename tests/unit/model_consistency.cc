@@ -47,6 +47,7 @@
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <memory>
 #include <random>
 #include <string>
 #include <type_traits>
@@ -89,6 +90,34 @@ namespace
            extra;
   }
 
+  // A model built from .prm text, on the mesh of its first cycle (the
+  // model keeps references to the parameters, which therefore live here).
+  template <class Model>
+  struct ModelOnFirstMesh
+  {
+    explicit ModelOnFirstMesh(const std::string &text)
+      : common(parse(prm, text))
+      , base(create_model(common, prm, MPI_COMM_WORLD))
+      , model(dynamic_cast<Model &>(*base))
+    {
+      model.setup_cycle(0);
+    }
+    static CommonParameters
+    parse(ParameterHandler &prm, const std::string &text)
+    {
+      CommonParameters::declare(prm);
+      declare_model_parameters(prm);
+      prm.parse_input_from_string(text);
+      CommonParameters common;
+      common.parse(prm);
+      return common;
+    }
+    ParameterHandler              prm;
+    const CommonParameters        common;
+    std::unique_ptr<ContactModel> base;
+    Model                        &model;
+  };
+
   // the vector type of a model's iterate (deal.II or Trilinos)
   template <class Model>
   using VectorOf =
@@ -113,15 +142,8 @@ namespace
               const std::string &text,
               const unsigned int n_steps = 3)
   {
-    ParameterHandler prm;
-    CommonParameters::declare(prm);
-    declare_model_parameters(prm);
-    prm.parse_input_from_string(text);
-    CommonParameters common;
-    common.parse(prm);
-    auto   base_model = create_model(common, prm, MPI_COMM_WORLD);
-    Model &model      = dynamic_cast<Model &>(*base_model);
-    model.setup_cycle(0);
+    ModelOnFirstMesh<Model> made(text);
+    Model &model = made.model;
 
     // a few full Newton steps: an iterate with contact
     ContactCounts c;
@@ -257,10 +279,7 @@ namespace
     const double E = 2e5, nu = 0.3, t = 0.01, eps = t / 2, gamma0 = 20;
     const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)),
                  mu     = E / (2 * (1 + nu)), r = gamma0 * E / t;
-    ParameterHandler prm;
-    CommonParameters::declare(prm);
-    declare_model_parameters(prm);
-    prm.parse_input_from_string(
+    ModelOnFirstMesh<MindlinModel> made(
       "set Model = mindlin\n"
       "subsection Geometry\n  set Length x = 10\n  set Length y = 10\n"
       "  set Thickness = 0.01\n  set Edge conditions = free, free, free, free\n"
@@ -269,11 +288,7 @@ namespace
       "subsection Contact\n  set Nitsche gamma0 = 20\n"
       "  set Friction coefficient = 0.2\nend\n"
       "subsection Output\n  set Format = none\n  set Directory = output-dir\nend\n");
-    CommonParameters common;
-    common.parse(prm);
-    auto          base_model = create_model(common, prm, MPI_COMM_WORLD);
-    MindlinModel &model      = dynamic_cast<MindlinModel &>(*base_model);
-    model.setup_cycle(0);
+    MindlinModel &model = made.model;
 
     double err_n = 0., err_t = 0., err_q = 0.;
     // (1) w = 0, phi = (k1 x, k2 y), ubar = (m1 x, m2 y): sigma_n and u_t
@@ -359,10 +374,7 @@ namespace
           const std::string name = "elasticity friction consistency Q" +
                                    std::to_string(degree) +
                                    " theta=" + std::to_string(theta);
-          ParameterHandler prm;
-          CommonParameters::declare(prm);
-          declare_model_parameters(prm);
-          prm.parse_input_from_string(
+          ModelOnFirstMesh<ElasticityModel> made(
             "set Model = elasticity\n"
             "subsection Geometry\n  set Length x = 1\n  set Length y = 1\n"
             "  set Thickness = 1\n"
@@ -381,12 +393,7 @@ namespace
             "\n  set Linear solver = direct\nend\n"
             "subsection Output\n  set Format = none\n"
             "  set Directory = output-dir\nend\n");
-          CommonParameters common;
-          common.parse(prm);
-          auto base_model = create_model(common, prm, MPI_COMM_WORLD);
-          ElasticityModel &model =
-            dynamic_cast<ElasticityModel &>(*base_model);
-          model.setup_cycle(0);
+          ElasticityModel &model = made.model;
           VectorTools::interpolate(model.get_dof_handler(),
                                    UniformStressState(c),
                                    model.iterate());
@@ -445,10 +452,7 @@ namespace
   {
     const double E = 2e5, nu = 0.3, t = 0.01, area = 100.;
     const double Dm = E * t / (1 - nu * nu);
-    ParameterHandler prm;
-    CommonParameters::declare(prm);
-    declare_model_parameters(prm);
-    prm.parse_input_from_string(
+    ModelOnFirstMesh<MindlinModel> made(
       "set Model = mindlin\n"
       "subsection Geometry\n  set Length x = 10\n  set Length y = 10\n"
       "  set Thickness = 0.01\n  set Edge conditions = free, free, free, free\n"
@@ -459,11 +463,7 @@ namespace
       "  set Friction coefficient = 0\nend\n"
       "subsection Mindlin\n  set Membrane unknowns = true\nend\n"
       "subsection Output\n  set Format = none\n  set Directory = output-dir\nend\n");
-    CommonParameters common;
-    common.parse(prm);
-    auto          base_model = create_model(common, prm, MPI_COMM_WORLD);
-    MindlinModel &model      = dynamic_cast<MindlinModel &>(*base_model);
-    model.setup_cycle(0);
+    MindlinModel &model = made.model;
     double err = 0.;
     for (const std::array<double, 4> m :
          {std::array<double, 4>{{2e-4, -2e-4, 1e-4, 3e-4}},
