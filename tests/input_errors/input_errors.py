@@ -36,6 +36,19 @@ CASES = [
     ("misspelled subsection", "subsection Materail\n  set Poisson ratio = 0.3\nend",
      ["Materail"]),
     ("unknown top-level entry", "set Modell = elasticity", ["Modell"]),
+    ("two-level solver, two cell layers",
+     "subsection Geometry\n  set Subdivisions = 4, 4, 2\nend\n"
+     "subsection Elasticity\n  set Linear solver = two-level\nend",
+     ["Elasticity/Linear solver", "'two-level'", "one cell through the thickness", "2 cells in x3"]),
+    ("two-level solver, refinement through the thickness",
+     "subsection Geometry\n  set Number of cycles = 2\nend\n"
+     "subsection Elasticity\n  set Linear solver = two-level\n"
+     "  set Refine through thickness = true\nend",
+     ["Elasticity/Linear solver", "'two-level'", "Refine through thickness"]),
+    ("two-level solver, hanging nodes",
+     "subsection Elasticity\n  set Linear solver = two-level\n"
+     "  set Refinement box = 0, 0, -1; 1, 1, 1\n  set Local refinement steps = 1\nend",
+     ["Elasticity/Linear solver", "'two-level'", "hanging nodes", "Refinement box"]),
     ("E = 0", "subsection Material\n  set Young's modulus = 0\nend",
      ["Young's modulus", "'0'", "> 0"]),
     ("E < 0", "subsection Material\n  set Young's modulus = -2e5\nend",

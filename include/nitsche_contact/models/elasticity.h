@@ -15,6 +15,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <nitsche_contact/column_two_level.h>
 #include <nitsche_contact/model.h>
 #include <nitsche_contact/models/mindlin.h>
 #include <nitsche_contact/parameters.h>
@@ -308,6 +309,7 @@ namespace NitscheContact
     double                     relative_residual   = 0.; ///< |R|/|AU| at postprocess
     unsigned long last_changed = 0; ///< status changes of the last matrix
     ReusedFactorization        direct_solver; ///< 'Linear solver = direct'
+    ColumnTwoLevel             two_level;     ///< 'Linear solver = two-level'
   };
 } // namespace NitscheContact
 

@@ -1,0 +1,96 @@
+"""Issue 2: 'Elasticity/Linear solver = two-level' (GMRES preconditioned by
+column block Jacobi and a coarse space of plate kinematics, doc/design.md)
+against the direct solver, a second method of the program: the same Newton
+problems, so the same converged solutions (both stop at |dU|_a <= 1e-6
+|U|_a: reactions, areas and probes agree to 1e-5, as in the MPI and
+predictor tests), on
+- the paper's 3D test, Q2, 8x8x1 -> 16x16x1 (theta = 1, frictionless:
+  symmetric, L D L^T coarse factorisations), on 1 and 2 MPI ranks;
+- Q1 on 16x16x1 (2 points per column through the thickness);
+- Coulomb friction F = 0.2 (paper_3d_friction.prm, 8x8x1; nonsymmetric
+  Newton matrices, LU coarse factorisations, the membrane coarse matrix
+  rebuilt with the stick terms), with the tangential reaction too;
+- theta = -1 (nonsymmetric without friction).
+The preconditioner must also be what it claims, mesh-independent: at most
+30 GMRES iterations per Newton step on every cycle (measured 12-17 on
+32x32x1 to 88x88x1, doc/benchmarks.md), and the mean of the finer cycle at
+most 1.5 times that of the coarser plus 3.
+Meshes it cannot serve are input errors (tests/input_errors)."""
+import os, re, sys
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from common import parse_args, run, check, close, finish
+
+args = parse_args()
+here = os.path.dirname(os.path.abspath(__file__))
+params = os.path.join(here, "..", "..", "parameters")
+
+
+def edit(text, entries, name):
+    for entry, value in entries:
+        text, n = re.subn(r"(?m)^(\s*set %s\s*=).*$" % re.escape(entry),
+                          lambda m: m.group(1) + " " + value, text)
+        check(n == 1, "%s: one entry '%s'" % (name, entry))
+    return text
+
+
+def two_level(text):
+    return text + ("\nsubsection Elasticity\n  set Linear solver = two-level\n"
+                   "  set Krylov tolerance = 1e-8\nend\n")
+
+
+def same(a, b, what, tangential=False):
+    for ca, cb in zip(a["cycles"], b["cycles"]):
+        c = "%s, cycle %d: " % (what, ca["cycle"])
+        check(ca["converged"] and cb["converged"], c + "both converged")
+        close(cb["contact_force"], ca["contact_force"], 1e-5, c + "reaction, two-level vs direct")
+        close(cb["contact_area"], ca["contact_area"], 1e-5, c + "contact area, two-level vs direct")
+        for i, (pa, pb) in enumerate(zip(ca["probes"], cb["probes"])):
+            close(pb, pa, 1e-5, c + "probe %d, two-level vs direct" % i)
+        if tangential:
+            close(dict(cb["extra"])["tangential_force"], dict(ca["extra"])["tangential_force"], 1e-5,
+                  c + "tangential reaction, two-level vs direct")
+
+
+def per_step(summary, what):
+    means = []
+    for c in summary["cycles"]:
+        its, lin = c["nonlinear_iterations"], c["linear_iterations"]
+        mean = lin / float(its)
+        print("%s, cycle %d: %d Newton steps, %d GMRES iterations (%.1f per step)"
+              % (what, c["cycle"], its, lin, mean))
+        check(lin >= its, "%s, cycle %d: GMRES iterations reported" % (what, c["cycle"]))
+        check(mean <= 30, "%s, cycle %d: at most 30 GMRES iterations per Newton step (%.1f)"
+              % (what, c["cycle"], mean))
+        means.append(mean)
+    return means
+
+
+paper = open(os.path.join(params, "paper_3d.prm")).read()
+paper = edit(paper, [("Number of cycles", "2")], "paper_3d")
+direct, _ = run(args, "paper_direct", paper)
+tl, log = run(args, "paper_two_level", two_level(paper))
+tl2, _ = run(args, "paper_two_level_np2", two_level(paper), np=2)
+check("linear solver = two-level" in log, "the log names the solver")
+same(direct, tl, "paper Q2, 1 rank")
+same(direct, tl2, "paper Q2, 2 ranks")
+for s, what in ((tl, "paper Q2, 1 rank"), (tl2, "paper Q2, 2 ranks")):
+    m = per_step(s, what)
+    check(m[1] <= 1.5 * m[0] + 3, what + ": GMRES iterations per step do not grow with the mesh")
+
+q1 = edit(paper, [("Polynomial degree", "2"), ("Subdivisions", "16, 16, 1"),
+                  ("Number of cycles", "2")], "q1")
+q1 = edit(q1, [("Polynomial degree", "1"), ("Number of cycles", "1")], "q1")
+same(run(args, "q1_direct", q1)[0], run(args, "q1_two_level", two_level(q1))[0], "Q1")
+
+friction = open(os.path.join(params, "paper_3d_friction.prm")).read()
+friction = edit(friction, [("Number of cycles", "1")], "friction")
+fd, _ = run(args, "friction_direct", friction)
+ft, _ = run(args, "friction_two_level", two_level(friction))
+check(dict(ft["cycles"][0]["extra"])["tangential_force"] > 0, "friction: a tangential reaction")
+same(fd, ft, "friction F = 0.2", tangential=True)
+per_step(ft, "friction F = 0.2")
+
+theta = edit(paper, [("Nitsche theta", "-1"), ("Number of cycles", "1")], "theta")
+same(run(args, "theta_direct", theta)[0], run(args, "theta_two_level", two_level(theta))[0],
+     "theta = -1")
+finish()
