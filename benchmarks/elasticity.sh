@@ -17,15 +17,20 @@
 # eighth sets the in-plane subdivisions of the first mesh (default 8; 11
 # with 4 cycles gives 88x88x1 cells, 281,961 DoFs). The table's column
 # 'neg' is the largest number of negative eigenvalues of a Newton matrix of
-# the cycle (from the L D L^T factorisation; '-' when it was LU). The ninth
+# the cycle (from the L D L^T factorisation; '-' when it was LU or the
+# two-level solver), 'lin' the linear iterations of the cycle (GMRES; 1 per
+# reused factorisation with 'direct'). The ninth
 # selects how MUMPS factorises the (symmetric, theta = 1) Newton matrices:
 # 'ldlt' (default) or 'lu' (through Amesos, as before session 10). The
 # tenth selects how each cycle starts: 'nested' (default: the previous
 # cycle's solution, U = 0 on the first) or 'plate' ('Elasticity/Plate
 # predictor': the Mindlin plate's solution lifted to 3D; the column 'pred'
 # then gives its Newton iterations, whose seconds are part of 'setup').
+# The third argument selects the linear solver: 'direct' (MUMPS), 'two-level'
+# (GMRES with the column smoother and the plate coarse space; Krylov
+# tolerance 1e-8, doc/benchmarks.md) or 'amg'.
 # Usage:
-#   benchmarks/elasticity.sh [path/to/nitsche-contact] [cycles] [direct|amg] [ranks] [plane|all] [gauss|lobatto] [gamma0] [subdivisions] [ldlt|lu] [nested|plate]
+#   benchmarks/elasticity.sh [path/to/nitsche-contact] [cycles] [direct|amg|two-level] [ranks] [plane|all] [gauss|lobatto] [gamma0] [subdivisions] [ldlt|lu] [nested|plate]
 # The program must be built with CMAKE_BUILD_TYPE=Release. Nonlinear
 # tolerance 1e-6 (the round-off floor of this thin plate is ~1e-7).
 set -e
@@ -33,6 +38,11 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 exe=${1:-$here/build/nitsche-contact}
 cycles=${2:-2}
 solver=${3:-direct}
+case "$solver" in
+  direct|amg) krylov=1e-10 ;;
+  two-level) krylov=1e-8 ;;
+  *) echo "benchmarks/elasticity.sh: solver must be 'direct', 'amg' or 'two-level', not '$solver'" >&2; exit 1 ;;
+esac
 ranks=${4:-1}
 case "${5:-plane}" in
   plane) through=false ;;
@@ -73,7 +83,7 @@ sed -e "s/^\( *set Number of cycles *=\).*/\1 $cycles/" \
     -e "s|^\( *set Directory *=\).*|\1 $work/out|" \
     -e "s/^\( *set Format *=\).*/\1 none/" \
     -e "s/^\( *set Print timings *=\).*/\1 true/" \
-    -e "s/^\( *set Load applied as *=.*\)/\1\n  set Linear solver = $solver/" \
+    -e "s/^\( *set Load applied as *=.*\)/\1\n  set Linear solver = $solver\n  set Krylov tolerance = $krylov/" \
     -e "s/^\( *set Refine through thickness *=\).*/\1 $through\n  set Contact quadrature rule = $rule\n  set Plate predictor = $predictor/" \
     "$here/parameters/paper_3d.prm" > "$work/bench.prm"
 run=("$exe")
@@ -92,7 +102,7 @@ print("3D elasticity model (Q2), paper test, linear solver %s (%s), %s MPI rank(
       "3x3 %s contact points per face, gamma0 %s (trace constant C_n %.3g)"
       % (sys.argv[4], sys.argv[8], sys.argv[5], sys.argv[6], sys.argv[7],
          dict(s["cycles"][-1]["extra"])["nitsche_trace_constant"]))
-print("%5s %9s %5s %5s %8s %8s %8s %8s %8s %8s %9s %5s" % ("cycle", "dofs", "its", "pred",
+print("%5s %9s %5s %5s %6s %8s %8s %8s %8s %8s %8s %9s %5s" % ("cycle", "dofs", "its", "pred", "lin",
       "setup", "assembly", "solve", "postproc", "output", "total", "force", "neg"))
 acc = 0.0
 for c in s["cycles"]:
@@ -100,8 +110,9 @@ for c in s["cycles"]:
     tot = t["setup"] + t["assembly"] + t["solve"] + t["postprocess"] + t["output"]
     acc += tot
     neg = dict(c["extra"]).get("newton_negative_eigenvalues")
-    print("%5d %9d %5d %5s %8.2f %8.2f %8.2f %8.2f %8.2f %8.2f %9.6f %5s" % (c["cycle"], c["n_dofs"],
+    print("%5d %9d %5d %5s %6d %8.2f %8.2f %8.2f %8.2f %8.2f %8.2f %9.6f %5s" % (c["cycle"], c["n_dofs"],
           c["nonlinear_iterations"], c.get("predictor_iterations", "-"),
+          c.get("linear_iterations", 0),
           t["setup"], t["assembly"], t["solve"],
           t["postprocess"], t["output"], tot, c["contact_force"],
           "-" if neg is None else "%d" % neg))

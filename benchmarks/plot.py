@@ -21,11 +21,15 @@ with open(src) as f:
             (int(row["finest_dofs"]), float(row["seconds"]), int(row["newton_its_finest"])))
 
 fig, (ax_t, ax_n) = plt.subplots(1, 2, figsize=(11, 4.2))
-for model, pts in runs.items():
+# more runs than the 10 colours of the default cycle: the colour map
+# tab20 and, past 10 runs, squares on dashed lines
+for i, (model, pts) in enumerate(runs.items()):
     pts.sort()
     dofs = [p[0] for p in pts]
-    ax_t.loglog(dofs, [p[1] for p in pts], "o-", label=model)
-    ax_n.semilogx(dofs, [p[2] for p in pts], "o-", label=model)
+    style = dict(color=plt.cm.tab20(i % 20), marker="o" if i < 10 else "s",
+                 ls="-" if i < 10 else "--", label=model)
+    ax_t.loglog(dofs, [p[1] for p in pts], **style)
+    ax_n.semilogx(dofs, [p[2] for p in pts], **style)
 ax_t.axhline(60, color="grey", ls="--", lw=0.8)
 ax_t.axvline(1e6, color="grey", ls=":", lw=0.8)
 ax_t.set_xlabel("DoFs of the finest cycle")
