@@ -326,24 +326,38 @@ namespace NitscheContact
                -1 :
                2 * (offset + dof_column[p]) + dof_component[p];
     };
-    for (int r = 0; r < a.NumMyRows(); ++r)
-      {
-        AssertThrow(a.RowMap().GID64(r) ==
-                      static_cast<long long>(owned.nth_index_in_set(r)),
-                    ExcInternalError());
-        int     n;
-        double *values;
-        int    *indices;
-        a.ExtractMyRowView(r, n, values, indices);
-        const long long ib = bending_row(r), im = membrane_row(r);
-        for (int e = 0; e < n; ++e)
-          {
-            if (ib >= 0 && col_bending[indices[e]] >= 0)
-              bending_dsp.add(ib, col_bending[indices[e]]);
-            if (im >= 0 && col_membrane[indices[e]] >= 0)
-              membrane_dsp.add(im, col_membrane[indices[e]]);
-          }
-      }
+    // f(bending row, bending column, membrane row, membrane column) for
+    // every entry of A's owned rows in storage order (-1 where the entry
+    // has no place in that coarse matrix)
+    const auto for_each_entry = [&](const auto &f) {
+      for (int r = 0; r < a.NumMyRows(); ++r)
+        {
+          AssertThrow(a.RowMap().GID64(r) ==
+                        static_cast<long long>(owned.nth_index_in_set(r)),
+                      ExcInternalError());
+          int     n;
+          double *values;
+          int    *indices;
+          a.ExtractMyRowView(r, n, values, indices);
+          const long long ib = bending_row(r), im = membrane_row(r);
+          for (int e = 0; e < n; ++e)
+            {
+              const long long jb = col_bending[indices[e]],
+                              jm = col_membrane[indices[e]];
+              f(ib >= 0 && jb >= 0 ? ib : -1,
+                jb,
+                im >= 0 && jm >= 0 ? im : -1,
+                jm);
+            }
+        }
+    };
+    for_each_entry([&](const long long ib, const long long jb,
+                       const long long im, const long long jm) {
+      if (ib >= 0)
+        bending_dsp.add(ib, jb);
+      if (im >= 0)
+        membrane_dsp.add(im, jm);
+    });
     bending_matrix.reinit(bending_owned, bending_owned, bending_dsp, comm);
     membrane_matrix.reinit(membrane_owned, membrane_owned, membrane_dsp,
                            comm);
@@ -355,25 +369,11 @@ namespace NitscheContact
     to_membrane.reserve(a.NumMyNonzeros());
     const Epetra_CrsMatrix &b = bending_matrix.trilinos_matrix();
     const Epetra_CrsMatrix &m = membrane_matrix.trilinos_matrix();
-    for (int r = 0; r < a.NumMyRows(); ++r)
-      {
-        int     n;
-        double *values;
-        int    *indices;
-        a.ExtractMyRowView(r, n, values, indices);
-        const long long ib = bending_row(r), im = membrane_row(r);
-        for (int e = 0; e < n; ++e)
-          {
-            to_bending.push_back(
-              (ib >= 0 && col_bending[indices[e]] >= 0) ?
-                locate(b, ib, col_bending[indices[e]]) :
-                -1);
-            to_membrane.push_back(
-              (im >= 0 && col_membrane[indices[e]] >= 0) ?
-                locate(m, im, col_membrane[indices[e]]) :
-                -1);
-          }
-      }
+    for_each_entry([&](const long long ib, const long long jb,
+                       const long long im, const long long jm) {
+      to_bending.push_back(ib >= 0 ? locate(b, ib, jb) : -1);
+      to_membrane.push_back(im >= 0 ? locate(m, im, jm) : -1);
+    });
 
     bending_rhs.reinit(bending_owned, comm);
     bending_x.reinit(bending_owned, comm);

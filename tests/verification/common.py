@@ -188,6 +188,16 @@ def fail(message):
     sys.exit(1)
 
 
+def edit(text, entries, name):
+    """Set each (entry, value) of entries in the parameter text; each entry
+    must occur exactly once (a check named after `name`)."""
+    for entry, value in entries:
+        text, n = re.subn(r"(?m)^(\s*set %s\s*=).*$" % re.escape(entry),
+                          lambda m: m.group(1) + " " + value, text)
+        check(n == 1, "%s: one entry '%s'" % (name, entry))
+    return text
+
+
 def close(value, reference, rel_tol, what):
     err = abs(value - reference) / max(abs(reference), 1e-300)
     check(err <= rel_tol, "%s: %.10g vs %.10g (rel. error %.2e <= %.1e)"

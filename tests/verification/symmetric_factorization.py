@@ -30,19 +30,11 @@ coercivity bounds:
 Without L D L^T (LU) no count is reported."""
 import os, re, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import parse_args, run, check, compare_cycle, finish
+from common import parse_args, run, check, compare_cycle, edit, finish
 
 args = parse_args()
 here = os.path.dirname(os.path.abspath(__file__))
 params = os.path.join(here, "..", "..", "parameters")
-
-
-def edit(text, entries, name):
-    for entry, value in entries:
-        text, n = re.subn(r"(?m)^(\s*set %s\s*=).*$" % re.escape(entry),
-                          lambda m: m.group(1) + " " + value, text)
-        check(n == 1, "%s: one entry '%s'" % (name, entry))
-    return text
 
 
 def negatives(summary):
