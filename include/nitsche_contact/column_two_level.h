@@ -20,8 +20,9 @@
 // is pre-smoothing, the coarse corrections and post-smoothing, a
 // symmetric preconditioner for symmetric A. Measured on the paper's test
 // (Q2, Lobatto contact points, gamma0 = 60, penalty r = 1.2e9): 18-20
-// Krylov iterations to a relative error of 1e-10 on 32^2 x 1 and 64^2 x 1
-// cells, independent of the mesh and the contact status.
+// CG iterations to a relative residual of 1e-12 on 32^2 x 1 and 64^2 x 1
+// cells (a scipy prototype on dumped Newton matrices), independent of the
+// mesh and the contact status.
 //
 // Columns never cross MPI ranks: every support point of a column lies on
 // the same cells (one layer), and deal.II gives a DoF to the smallest
@@ -120,8 +121,6 @@ namespace NitscheContact
     /// per entry of A's owned rows (in ExtractMyRowView order): where it
     /// goes in the coarse matrices' local storage (-1: nowhere)
     std::vector<std::int64_t> to_bending, to_membrane;
-    /// offsets of the coarse matrices' local rows in that storage
-    std::vector<std::int64_t> bending_row_start, membrane_row_start;
 
     dealii::TrilinosWrappers::SparseMatrix bending_matrix, membrane_matrix;
     mutable dealii::TrilinosWrappers::MPI::Vector bending_rhs, bending_x,

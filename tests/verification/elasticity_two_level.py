@@ -6,15 +6,18 @@ problems, so the same converged solutions (both stop at |dU|_a <= 1e-6
 predictor tests), on
 - the paper's 3D test, Q2, 8x8x1 -> 16x16x1 (theta = 1, frictionless:
   symmetric, L D L^T coarse factorisations), on 1 and 2 MPI ranks;
-- Q1 on 16x16x1 (2 points per column through the thickness);
+- Q1 on 16x16x1 (2 points per column through the thickness; Q1 locks,
+  its centre deflection stays near -0.005, so the obstacle is raised to
+  -0.01, which the lower face touches in the centre: area 0.75);
 - Coulomb friction F = 0.2 (paper_3d_friction.prm, 8x8x1; nonsymmetric
   Newton matrices, LU coarse factorisations, the membrane coarse matrix
   rebuilt with the stick terms), with the tangential reaction too;
 - theta = -1 (nonsymmetric without friction).
-The preconditioner must also be what it claims, mesh-independent: at most
-30 GMRES iterations per Newton step on every cycle (measured 12-17 on
-32x32x1 to 88x88x1, doc/benchmarks.md), and the mean of the finer cycle at
-most 1.5 times that of the coarser plus 3.
+The preconditioner must also be what it claims, mesh-independent: Q2 at
+most 30 GMRES iterations per Newton step on average over every cycle
+(measured 8.5-12.2 on 8x8x1 to 88x88x1 at the tolerance 1e-8 used here,
+doc/benchmarks.md), Q1 at most 60 (measured 21 in this case), and the mean of
+the finer cycle at most 1.5 times that of the coarser plus 3.
 Meshes it cannot serve are input errors (tests/input_errors)."""
 import os, re, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -43,7 +46,7 @@ def same(a, b, what, tangential=False):
                   c + "tangential reaction, two-level vs direct")
 
 
-def per_step(summary, what):
+def per_step(summary, what, limit=30):
     means = []
     for c in summary["cycles"]:
         its, lin = c["nonlinear_iterations"], c["linear_iterations"]
@@ -51,8 +54,8 @@ def per_step(summary, what):
         print("%s, cycle %d: %d Newton steps, %d GMRES iterations (%.1f per step)"
               % (what, c["cycle"], its, lin, mean))
         check(lin >= its, "%s, cycle %d: GMRES iterations reported" % (what, c["cycle"]))
-        check(mean <= 30, "%s, cycle %d: at most 30 GMRES iterations per Newton step (%.1f)"
-              % (what, c["cycle"], mean))
+        check(mean <= limit, "%s, cycle %d: at most %d GMRES iterations per Newton step (%.1f)"
+              % (what, c["cycle"], limit, mean))
         means.append(mean)
     return means
 
@@ -70,8 +73,13 @@ for s, what in ((tl, "paper Q2, 1 rank"), (tl2, "paper Q2, 2 ranks")):
     check(m[1] <= 1.5 * m[0] + 3, what + ": GMRES iterations per step do not grow with the mesh")
 
 q1 = edit(paper, [("Polynomial degree", "1"), ("Subdivisions", "16, 16, 1"),
-                  ("Number of cycles", "1")], "q1")
-same(run(args, "q1_direct", q1)[0], run(args, "q1_two_level", two_level(q1))[0], "Q1")
+                  ("Number of cycles", "1"), ("Level", "-0.01")], "q1")
+q1d, _ = run(args, "q1_direct", q1)
+q1t, _ = run(args, "q1_two_level", two_level(q1))
+check(q1d["cycles"][0]["contact_force"] > 0 and q1d["cycles"][0]["contact_area"] > 0,
+      "Q1: in contact (reaction %g)" % q1d["cycles"][0]["contact_force"])
+same(q1d, q1t, "Q1")
+per_step(q1t, "Q1", limit=60)
 
 friction = open(os.path.join(params, "paper_3d_friction.prm")).read()
 friction = edit(friction, [("Number of cycles", "1")], "friction")
@@ -82,6 +90,8 @@ same(fd, ft, "friction F = 0.2", tangential=True)
 per_step(ft, "friction F = 0.2")
 
 theta = edit(paper, [("Nitsche theta", "-1"), ("Number of cycles", "1")], "theta")
-same(run(args, "theta_direct", theta)[0], run(args, "theta_two_level", two_level(theta))[0],
-     "theta = -1")
+thd, _ = run(args, "theta_direct", theta)
+tht, _ = run(args, "theta_two_level", two_level(theta))
+same(thd, tht, "theta = -1")
+per_step(tht, "theta = -1")
 finish()
