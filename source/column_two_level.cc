@@ -115,6 +115,7 @@ namespace NitscheContact
     col_position.clear();
     to_bending.clear();
     to_membrane.clear();
+    n_entries = 0;
     bending_matrix.clear();
     membrane_matrix.clear();
     bending_solver.clear();
@@ -365,14 +366,15 @@ namespace NitscheContact
     // where every entry of A goes
     to_bending.clear();
     to_membrane.clear();
-    to_bending.reserve(a.NumMyNonzeros());
-    to_membrane.reserve(a.NumMyNonzeros());
+    n_entries = a.NumMyNonzeros();
     const Epetra_CrsMatrix &b = bending_matrix.trilinos_matrix();
     const Epetra_CrsMatrix &m = membrane_matrix.trilinos_matrix();
     for_each_entry([&](const long long ib, const long long jb,
                        const long long im, const long long jm) {
-      to_bending.push_back(ib >= 0 ? locate(b, ib, jb) : -1);
-      to_membrane.push_back(im >= 0 ? locate(m, im, jm) : -1);
+      if (ib >= 0)
+        to_bending.push_back(locate(b, ib, jb));
+      if (im >= 0)
+        to_membrane.push_back(locate(m, im, jm));
     });
 
     bending_rhs.reinit(bending_owned, comm);
@@ -409,12 +411,14 @@ namespace NitscheContact
     const std::vector<double *> m = row_values(membrane_matrix.trilinos_matrix());
 
     const Epetra_CrsMatrix &a = A.trilinos_matrix();
-    AssertThrow(a.NumMyNonzeros() == static_cast<int>(to_bending.size()) &&
+    AssertThrow(a.NumMyNonzeros() == n_entries &&
                   a.ColMap().NumMyElements() ==
                     static_cast<int>(col_bending.size()),
                 ExcMessage("two-level preconditioner: the matrix pattern "
                            "changed since initialize()"));
-    std::size_t k = 0;
+    // the entries with a place in a coarse matrix come in the order of
+    // to_bending and to_membrane (initialize())
+    std::size_t kb = 0, km = 0;
     for (int r = 0; r < a.NumMyRows(); ++r)
       {
         int     n;
@@ -423,6 +427,8 @@ namespace NitscheContact
         a.ExtractMyRowView(r, n, values, indices);
         const double row_weight =
           dof_component[r] == 2 ? 1. : dof_zeta[r];
+        const bool bending_row  = row_weight != 0.;
+        const bool membrane_row = dof_component[r] != 2;
         const unsigned int column = dof_column[r];
         // this row's position in its column
         int row_position = -1;
@@ -431,17 +437,24 @@ namespace NitscheContact
              ++q)
           if (column_dofs[q] == static_cast<unsigned int>(r))
             row_position = q - column_start[column];
-        for (int e = 0; e < n; ++e, ++k)
+        for (int e = 0; e < n; ++e)
           {
             const double v = values[e];
-            if (to_bending[k] >= 0)
-              entry(b, to_bending[k]) += row_weight * col_weight[indices[e]] * v;
-            if (new_membrane && to_membrane[k] >= 0)
-              entry(m, to_membrane[k]) += v;
+            if (bending_row && col_bending[indices[e]] >= 0)
+              entry(b, to_bending[kb++]) +=
+                row_weight * col_weight[indices[e]] * v;
+            if (membrane_row && col_membrane[indices[e]] >= 0)
+              {
+                if (new_membrane)
+                  entry(m, to_membrane[km]) += v;
+                ++km;
+              }
             if (col_local_column[indices[e]] == static_cast<int>(column))
               column_inverse[column](row_position, col_position[indices[e]]) = v;
           }
       }
+    AssertThrow(kb == to_bending.size() && km == to_membrane.size(),
+                ExcInternalError());
     for (auto &block : column_inverse)
       block.gauss_jordan();
     refactorize          = true;
