@@ -1780,7 +1780,7 @@ namespace NitscheContact
     // times |b| on thin plates, whose stiffest modes (through the
     // thickness, in the penalty rows) amplify an error the soft bending
     // load never excites: measured 14-380 |b| at the cold start of the
-    // paper's 8x8x1 mesh, with the same Newton path as the direct solver.
+    // paper's 8x8x1 mesh, with the direct solver's converged solutions.
     // A singular A (an unrestrained rigid motion, all of which are plate
     // kinematics) has a singular coarse matrix, which the coarse
     // factorisation's own check of this kind reports.)
