@@ -127,8 +127,10 @@ namespace NitscheContact
     // bound of J at the next iterate from the step that leads there (NaN:
     // none, measure J there)
     double next_bound = std::numeric_limits<double>::quiet_NaN();
-    // whether the last step was a full Newton step (rigid solutions below)
-    bool last_step_full = false;
+    // whether the last step was a full Newton step (rigid solutions and
+    // the active-set stop below), and its |dU|_a/|U|_a
+    bool   last_step_full = false;
+    double last_relative  = std::numeric_limits<double>::infinity();
 
     for (;;)
       {
@@ -181,6 +183,40 @@ namespace NitscheContact
               break;
             }
         }
+
+        // Active-set stop (the stopping rule of the primal-dual active set
+        // method, Hintermueller, Ito and Kunisch 2003): without friction the
+        // residual is linear on a fixed contact status, and each point's
+        // status quantity is affine along a step. So when the last full
+        // Newton step, computed on the status of the previous iterate,
+        // ends at an iterate with that same status (n_changed = 0: the
+        // status of the last Jacobian), it changed no status on its way
+        // and the residual here is that of the linear solve: the iterate
+        // solves the nonlinear problem up to the linear solver. Accepted
+        // when that step was also below the tolerance, so that every
+        // accepted iterate is, as with the test after the solve below, a
+        // full step of size <= 'Tolerance' from the previous one; the
+        // confirming solve on the settled status is saved (one Newton
+        // iteration per cycle). Not with friction (the Coulomb projection
+        // is not linear on a fixed status) nor after a stick step.
+        if (prm.active_set_stop && solves > 0 && stage_friction == 0. &&
+            last_step_full &&
+            last_relative <= prm.tolerance && c.n_changed == 0 &&
+            c.n_reversed == 0)
+          {
+            converged = true;
+            if (prm.print_iterations)
+              {
+                std::ostringstream line;
+                line << "    converged: the last full step (|dU|_a/|U|_a "
+                     << std::scientific << std::setprecision(3)
+                     << last_relative << std::defaultfloat << " <= "
+                     << prm.tolerance
+                     << ") kept the contact status (active-set stop)";
+                pcout << line.str() << std::endl;
+              }
+            break;
+          }
 
         // A contact status seen two or more iterations ago coming back
         // means the full-step iteration cycles: switch to damped steps.
@@ -455,6 +491,7 @@ namespace NitscheContact
             pcout << line.str() << std::endl;
           }
         last_step_full = step >= 1.;
+        last_relative  = relative;
         // Converged: the contact status did not change since the previous
         // iterate and the Newton correction is negligible. (A small
         // correction alone is not enough: at points entering contact the

@@ -667,6 +667,19 @@ namespace NitscheContact
         "full step only when the slope of J there is small). See "
         "doc/design.md.");
       declare_entry(prm,
+        "Active-set stop", "true", Patterns::Bool(),
+        "Without friction: also accept an iterate reached by a full Newton "
+        "step of size |dU|_a/|U|_a <= Tolerance when its contact status is "
+        "that of the previous iterate, on which the step was computed. The "
+        "residual is linear on a fixed status and each point's status "
+        "quantity affine along the step, so the step changed no status on "
+        "its way and the iterate solves the problem up to the linear solve "
+        "(the stopping rule of the primal-dual active set method). It "
+        "saves the confirming Newton iteration that the test after the "
+        "solve needs (the correction on a settled status), one per cycle "
+        "where the last status-changing step is already below Tolerance. "
+        "false: only that test (the counts of sessions 1-23).");
+      declare_entry(prm,
         "Fast line search", "true", Patterns::Bool(),
         "With the exact line search (see 'Line search'): evaluate the slope "
         "of J at the trial steps from point values along the Newton step, "
@@ -968,6 +981,7 @@ namespace NitscheContact
       friction_steps        = prm.get_integer("Friction steps");
       damping_after         = prm.get_integer("Damping after");
       nonmonotone_window    = prm.get_integer("Nonmonotone window");
+      active_set_stop       = prm.get_bool("Active-set stop");
       fast_line_search      = prm.get_bool("Fast line search");
       damping_without_decrease =
         prm.get_integer("Damping after no decrease");

@@ -165,6 +165,8 @@ namespace NitscheContact
     unsigned int    friction_steps         = 0;
     unsigned int    damping_after          = 100000;
     unsigned int    nonmonotone_window     = 5;
+    /// Nonlinear solver/Active-set stop
+    bool            active_set_stop        = true;
     bool            fast_line_search       = true;
     unsigned int    damping_without_decrease = 20;
     bool            reuse_factorization    = true;
