@@ -3,16 +3,19 @@
 # paper_kirchhoff.prm): nested iteration over N cycles starting from 16x16
 # cells, GSV theta = 1. Prints DoFs, Newton and Krylov iterations and
 # seconds per phase per cycle, the total wall time and the peak memory.
-#   usage: benchmarks/kirchhoff.sh [BUILD_DIR] [CYCLES] [SOLVER] [TOLERANCE] [OBSTACLE]
+#   usage: benchmarks/kirchhoff.sh [BUILD_DIR] [CYCLES] [SOLVER] [TOLERANCE] [OBSTACLE] [STOP]
 # SOLVER is 'multigrid' (default: CG + geometric multigrid, linear in the
 # number of dofs) or 'direct' (MUMPS; uses BLAS, so an optimised BLAS such
 # as OpenBLAS speeds it up). TOLERANCE is the Newton tolerance (default
 # 1e-9: at 1M dofs 1e-10 of the .prm is at the round-off floor). OBSTACLE
 # is 'gsv' (default: the .prm's rigid obstacle, GSV alpha*D = 1e-4) or
 # 'penalty' (alpha = 0, kappa = 1e-6: the pure penalty / elastic obstacle
-# of compliance 1e-6, doc/kirchhoff.md 5).
+# of compliance 1e-6, doc/kirchhoff.md 5). STOP is 'Nonlinear solver/
+# Active-set stop' (default true; false for the driver before session 24).
 # 6 cycles = 512x512 cells = 1,052,676 dofs (with 'multigrid' about 1.1 GB
-# and 25 s since session 9; with 'direct' about 2.2 GB and a few minutes).
+# and 25 s since session 9; with 'direct' about 2.2 GB and a few minutes);
+# 7 cycles = 1024x1024 cells = 4,202,500 dofs (multigrid, about 3.9 GB;
+# its round-off floor is near 1e-9, so give TOLERANCE 1e-8 there).
 # Build in Release first.
 set -e
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -21,6 +24,11 @@ cycles=${2:-6}
 solver=${3:-multigrid}
 tol=${4:-1e-9}
 obstacle=${5:-gsv}
+stop=${6:-true}
+case "$stop" in
+  true|false) ;;
+  *) echo "benchmarks/kirchhoff.sh: STOP must be 'true' or 'false', not '$stop'" >&2; exit 1 ;;
+esac
 case "$obstacle" in
   gsv) alpha=1e-4; kappa=0 ;;
   penalty) alpha=0; kappa=1e-6 ;;
@@ -32,7 +40,7 @@ sed -e "s/set Number of cycles = .*/set Number of cycles = $cycles/" \
     -e "s#set Directory = .*#set Directory = $work/out#" \
     -e "s/set Format = vtu/set Format = none\n  set Print timings = true/" \
     -e "s/set Tolerance = .*/set Tolerance = $tol/" \
-    -e "s/set Maximum iterations = 100/set Maximum iterations = 100\n  set Print iterations = false/" \
+    -e "s/set Maximum iterations = 100/set Maximum iterations = 100\n  set Print iterations = false\n  set Active-set stop = $stop/" \
     -e "s/set Quadrature points = 6/set Quadrature points = 6\n  set Linear solver = $solver/" \
     -e "s/set Stabilisation alpha = .*/set Stabilisation alpha = $alpha/" \
     -e "s/set Obstacle compliance kappa = .*/set Obstacle compliance kappa = $kappa/" \

@@ -609,7 +609,9 @@ namespace NitscheContact
         "by the obstacle alone) the Euclidean norms of the coefficient "
         "vectors replace the energy norms. Without friction, a run whose contact status has "
         "settled while the correction stops decreasing (Tolerance below "
-        "the round-off floor) stops early and says so.");
+        "the round-off floor) stops early and says so, and a full step "
+        "below Tolerance that keeps the contact status also ends the "
+        "cycle (see 'Active-set stop').");
       declare_entry(prm, "Maximum iterations", "300",
                         Patterns::Integer(1, 100000),
                         "Iteration limit per cycle (per stage when a cycle "
