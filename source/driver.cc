@@ -145,8 +145,6 @@ namespace NitscheContact
             std::to_string(solves) + " of cycle " + std::to_string(cycle) +
             ": the load, the obstacle or a parameter gives values that "
             "overflow (check their magnitudes)");
-        if (solves >= prm.max_iterations)
-          break;
         // The bound of J(U_k) left by the last step, or J(U_k) itself
         // (NaN without an energy): energy() uses the contact part of the
         // assemble() just done at U_k.
@@ -192,7 +190,10 @@ namespace NitscheContact
         // ends at an iterate with that same status (n_changed = 0: the
         // status of the last Jacobian), it changed no status on its way
         // and the residual here is that of the linear solve: the iterate
-        // solves the nonlinear problem up to the linear solver. Accepted
+        // solves the nonlinear problem up to the linear solver. Only where
+        // that solve's error is a small part of the step
+        // (model.last_solve_accurate(): direct solvers and the plate
+        // multigrids, not the 3D Krylov solvers). Accepted
         // when that step was also below the tolerance, so that every
         // accepted iterate is, as with the test after the solve below, a
         // full step of size <= 'Tolerance' from the previous one; the
@@ -200,7 +201,7 @@ namespace NitscheContact
         // iteration per cycle). Not with friction (the Coulomb projection
         // is not linear on a fixed status) nor after a stick step.
         if (prm.active_set_stop && solves > 0 && stage_friction == 0. &&
-            last_step_full &&
+            last_step_full && model.last_solve_accurate() &&
             last_relative <= prm.tolerance && c.n_changed == 0 &&
             c.n_reversed == 0)
           {
@@ -217,6 +218,10 @@ namespace NitscheContact
               }
             break;
           }
+        // (after the two stopping tests above, which need no solve: a cycle
+        // that converges after N solves needs N iterations, not N + 1)
+        if (solves >= prm.max_iterations)
+          break;
 
         // A contact status seen two or more iterations ago coming back
         // means the full-step iteration cycles: switch to damped steps.

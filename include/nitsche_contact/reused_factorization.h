@@ -6,8 +6,8 @@
 //   forward/backward substitution with the kept factors gives exactly what
 //   a new factorisation would (MUMPS and KLU are deterministic), the Newton
 //   path is unchanged, and the factorisation is saved. This is the
-//   confirming last iteration of every cycle and every damped step that
-//   keeps the status;
+//   confirming last iteration of a cycle that the driver's active-set stop
+//   does not end, and every damped step that keeps the status;
 // - with friction the slip directions still move the matrix a little:
 //   GMRES, left-preconditioned by the kept factorisation (its preconditioned
 //   residual is about the error; the plain residual of these systems can be

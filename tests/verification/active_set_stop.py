@@ -14,11 +14,22 @@ earlier), so per cycle:
  - the rule fires on at least one cycle of every frictionless case, and on
    none with friction (the Coulomb projection is not linear on a fixed
    status, so the rule is off there).
+Where it fires, the log must show the rule's preconditions: the value it
+prints is the |dU|_a/|U|_a of the last iteration line, a full step (no
+step length printed), and at most the Newton tolerance.
 Cases: the Kirchhoff plate with the pure penalty (kappa = 1e-6) with the
 direct solver and with the multigrid solver (inexact Newton: loose Krylov
-solves while the status changes); the Mindlin plate of paper_mindlin.prm;
-3D elasticity with Gauss-Lobatto contact points (cold start on 8^2 x 1);
-and the Mindlin plate with Coulomb friction F = 0.2."""
+solves while the status changes); the Mindlin plate of paper_mindlin.prm,
+with the direct and with the multigrid solver; 3D elasticity with Gauss-
+Lobatto contact points (cold start on 8^2 x 1) with the direct solver, and
+with the two-level Krylov solver, after whose solves the rule must not fire
+(their stopping test does not control the error in the energy norm); and
+the Mindlin plate with Coulomb friction F = 0.2 and 'Friction steps = 1',
+where the rule fires in the frictionless stages only.
+Last, 'Maximum iterations' counts solves: the Mindlin run again with the
+limit set to the largest count of a cycle that the rule ended must
+converge with the same counts, and without the rule (one more iteration
+needed there) must stop with the non-convergence error."""
 import os, re, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from common import shipped_prm, parse_args, run, check, compare_cycle, finish
@@ -41,22 +52,55 @@ elasticity = [("Number of cycles", "2"), ("Subdivisions", "8, 8, 1"),
               ("Tolerance", "1e-6"),
               ("Refine through thickness", "false\n  set Contact quadrature rule = lobatto"),
               ("Nitsche gamma0", "60")]
-# (the file leaves 'Friction steps' at 0: every stage is frictional; at
-# this tolerance the rule, if it were on with friction, would fire on the
-# last cycle: measured with it switched on)
-friction = [("Number of cycles", "3"), ("Tolerance", "1e-6")]
+mindlin_mg = [("Number of cycles", "3"),
+              ("Membrane unknowns", "auto\n  set Linear solver = multigrid")]
+two_level = [(e, v + "\n  set Linear solver = two-level\n  set Krylov tolerance = 1e-8"
+              if e == "Refine through thickness" else v) for e, v in elasticity]
+# frictionless stage first, then F = 0.2; at this tolerance the rule fires
+# in the frictionless stages of cycles 1 and 2
+friction = [("Number of cycles", "3"), ("Tolerance", "1e-6\n  set Friction steps = 1")]
 
-# (tag, .prm, changes, frictional, rtol)
+# (tag, .prm, changes, kind, rtol); kind: "fires", "never" (3D Krylov
+# solver), "friction" (fires in frictionless stages only).
 # (rtol 1e-6 for the plates' Newton tolerance 1e-8: the contact force,
 # r times gaps with r = 4e9 for Mindlin, moves by 2e-7 of itself with a
 # correction of 1e-9 in the energy norm; 1e-5 at 1e-6)
-cases = [("kirchhoff_penalty", "paper_kirchhoff.prm", penalty, False, 1e-6),
-         ("kirchhoff_penalty_multigrid", "paper_kirchhoff.prm", penalty_mg, False, 1e-6),
-         ("mindlin", "paper_mindlin.prm", [], False, 1e-6),
-         ("elasticity", "paper_3d.prm", elasticity, False, 1e-5),
-         ("mindlin_friction", "paper_mindlin_friction.prm", friction, True, 1e-5)]
+cases = [("kirchhoff_penalty", "paper_kirchhoff.prm", penalty, "fires", 1e-6),
+         ("kirchhoff_penalty_multigrid", "paper_kirchhoff.prm", penalty_mg, "fires", 1e-6),
+         ("mindlin", "paper_mindlin.prm", [], "fires", 1e-6),
+         ("mindlin_multigrid", "paper_mindlin.prm", mindlin_mg, "fires", 1e-6),
+         ("elasticity", "paper_3d.prm", elasticity, "fires", 1e-5),
+         ("elasticity_two_level", "paper_3d.prm", two_level, "never", 1e-5),
+         ("mindlin_friction", "paper_mindlin_friction.prm", friction, "friction", 1e-5)]
 
-for tag, prm, changes, frictional, rtol in cases:
+ITERATION = re.compile(r"^ +iteration +\d+: .*\|dU\|_a/\|U\|_a ([0-9.e+-]+)")
+STOP = re.compile(r"last full step \(\|dU\|_a/\|U\|_a ([0-9.e+-]+) <= ([0-9.e+-]+)\)")
+
+
+def stops(log, what):
+    """The active-set stops in the log of one cycle, each checked against
+    the last iteration line before it; returns [(stop line index, stage
+    header before it)]."""
+    found, last, stage = [], None, ""
+    for i, line in enumerate(log.splitlines()):
+        if "friction step" in line:
+            stage = line.strip()
+        m = ITERATION.match(line)
+        if m:
+            last = line
+        m = STOP.search(line)
+        if m:
+            value, tol = float(m.group(1)), float(m.group(2))
+            check(last is not None and ", step " not in last and
+                  float(ITERATION.match(last).group(1)) == value and value <= tol,
+                  what + ": stop after a full step of %g <= %g (%s)"
+                  % (value, tol, (last or "no iteration line").strip()[:60]))
+            found.append((i, stage))
+    return found
+
+
+limit_case = None
+for tag, prm, changes, kind, rtol in cases:
     off, out_off = run(args, tag + "_off", prm_from(prm, changes, False))
     on, out_on = run(args, tag + "_on", prm_from(prm, changes, True))
     check("active-set stop" not in out_off, tag + ": never stops by the rule when it is off")
@@ -69,15 +113,40 @@ for tag, prm, changes, frictional, rtol in cases:
         check(cf["active_points"] == cn["active_points"],
               what + ": the same active points (%d, %d)"
               % (cf["active_points"], cn["active_points"]))
-        stopped = "(active-set stop)" in logs[cycle]
-        fired += stopped
+        found = stops(logs[cycle], what)
+        fired += len(found)
+        if kind == "friction":
+            check(all("frictionless" in stage for _, stage in found),
+                  what + ": stops only in the frictionless stage")
+            # the friction stage starts from a slightly different iterate:
+            # its count may differ, the frictionless stage's by the stops
+            continue
         saved = cf["nonlinear_iterations"] - cn["nonlinear_iterations"]
-        check(saved == (1 if stopped else 0),
-              what + ": %d and %d iterations%s"
-              % (cf["nonlinear_iterations"], cn["nonlinear_iterations"],
-                 " (active-set stop)" if stopped else ""))
-    if frictional:
-        check(fired == 0, tag + ": the rule never fires with friction")
+        check(saved == len(found),
+              what + ": %d and %d iterations (%d active-set stop(s))"
+              % (cf["nonlinear_iterations"], cn["nonlinear_iterations"], len(found)))
+        if found and tag == "mindlin" and (limit_case is None or
+                                           cn["nonlinear_iterations"] > limit_case):
+            limit_case = cn["nonlinear_iterations"]
+    if kind == "never":
+        check(fired == 0, tag + ": the rule never fires after the 3D Krylov solver")
     else:
-        check(fired > 0, tag + ": the rule fires on %d cycle(s)" % fired)
+        check(fired > 0, tag + ": the rule fires %d time(s)" % fired)
+
+# 'Maximum iterations' = N lets a cycle end by the rule after N solves
+check(limit_case is not None, "mindlin: a cycle ended by the rule for the limit case")
+if limit_case is not None:
+    limit = [("Maximum iterations", str(limit_case))]
+    ref, _ = run(args, "mindlin_on", prm_from("paper_mindlin.prm", [], True))
+    on, out = run(args, "mindlin_limit_on", prm_from("paper_mindlin.prm", limit, True))
+    check(on is not None and all(c["converged"] for c in on["cycles"]) and
+          [c["nonlinear_iterations"] for c in on["cycles"]] ==
+          [c["nonlinear_iterations"] for c in ref["cycles"]],
+          "Maximum iterations = %d: the run with the rule converges with the same counts"
+          % limit_case)
+    _, out = run(args, "mindlin_limit_off", prm_from("paper_mindlin.prm", limit, False),
+                 expect_status=2)
+    check("did not converge" in out or "no convergence" in out,
+          "Maximum iterations = %d without the rule: the cycle needs one more and "
+          "the run says so" % limit_case)
 finish()

@@ -87,6 +87,11 @@ namespace NitscheContact
     {
       return relative_l2(increment, solution);
     }
+    bool
+    last_solve_accurate() const override
+    {
+      return linear_solver == "direct";
+    }
     double
     increment_energy_norm() const override;
     double

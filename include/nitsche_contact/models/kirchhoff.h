@@ -89,6 +89,11 @@ namespace NitscheContact
     prepare_line_search() override;
     double
     line_slope(double t) const override;
+    bool
+    last_solve_accurate() const override
+    {
+      return true; // direct, or the multigrid's CG/GMRES (model.h)
+    }
     double
     increment_l2_relative() const override
     {

@@ -97,6 +97,11 @@ namespace NitscheContact
     {
       return load_factor * (load * solution);
     }
+    bool
+    last_solve_accurate() const override
+    {
+      return true; // direct, or the multigrid's CG/GMRES (model.h)
+    }
     double
     increment_l2_relative() const override
     {
