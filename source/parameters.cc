@@ -611,7 +611,9 @@ namespace NitscheContact
         "settled while the correction stops decreasing (Tolerance below "
         "the round-off floor) stops early and says so, and a full step "
         "below Tolerance that keeps the contact status also ends the "
-        "cycle (see 'Active-set stop').");
+        "cycle, as does, after the plate multigrids, a full step of any "
+        "size whose linear solve's estimated error is below it (see "
+        "'Active-set stop').");
       declare_entry(prm, "Maximum iterations", "300",
                         Patterns::Integer(1, 100000),
                         "Iteration limit per cycle (per stage when a cycle "
@@ -684,7 +686,13 @@ namespace NitscheContact
         "direct solvers and the plate multigrids (measured 1-15 % of the "
         "step, so the accepted iterate's error stays below Tolerance), not "
         "the 3D model's 'amg' and 'two-level' Krylov solvers, whose "
-        "stopping test does not control it. false: only the test after the "
+        "stopping test does not control it. After the plate multigrids' "
+        "CG (theta = 1) the step may be of any size when the estimated "
+        "error of its linear solve is below Tolerance |U|_a (on the kept "
+        "status that error is the next Newton correction; estimate "
+        "sqrt(r.Br / lambda_min) from the final residual r, one V-cycle B "
+        "and CG's smallest Ritz value, halved): this saves the confirming "
+        "iteration on every such cycle. false: only the test after the "
         "solve (the counts of sessions 1-23).");
       declare_entry(prm,
         "Fast line search", "true", Patterns::Bool(),
@@ -1109,12 +1117,12 @@ namespace NitscheContact
     // equilibrium with a huge reaction. The contact surface of the
     // undeformed body is its bottom face x3 = -t/2 (3D model, and the plate
     // models with the bottom-face convention) or the mid-plane. A compliant
-    // obstacle (Kirchhoff model, kappa > 0: an elastic foundation) is
-    // well posed there, and is not checked.
+    // obstacle (plate models, kappa > 0: an elastic foundation) is well
+    // posed there, and is not checked.
     double kappa = 0.;
-    if (model == "kirchhoff")
+    if (model == "kirchhoff" || model == "mindlin")
       {
-        prm.enter_subsection("Kirchhoff");
+        prm.enter_subsection(model == "kirchhoff" ? "Kirchhoff" : "Mindlin");
         kappa = prm.get_double("Obstacle compliance kappa");
         prm.leave_subsection();
       }

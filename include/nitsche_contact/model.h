@@ -256,6 +256,18 @@ namespace NitscheContact
       return false;
     }
 
+    /// An estimate, from above, of the energy norm of the algebraic error
+    /// of the last Newton correction (solve_linear()), +infinity when the
+    /// model has none: the plate multigrids' CG offers one
+    /// (HermiteMultigrid::last_error_estimate()). On an unchanged
+    /// frictionless status this is the size of the next Newton correction,
+    /// which the driver's active-set stop then need not compute.
+    virtual double
+    last_solve_error() const
+    {
+      return std::numeric_limits<double>::infinity();
+    }
+
     /// Optional fast path of the exact line search: prepare the evaluation
     /// of phi'(t) = R(U_base + t dU).dU for any t in [0, 1] without
     /// assembling (U_base and dU as in apply_increment()); returns false if

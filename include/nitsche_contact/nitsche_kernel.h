@@ -197,16 +197,18 @@ namespace NitscheContact
 
   /// For theta = 1 and F = 0 the Nitsche residual is the gradient of the
   /// convex energy J(u) = 1/2 a(u,u) - L(u) + sum over contact points of
-  /// this density (1/(2r)) ([s_n]_-^2 - sigma_n^2); the driver uses J as the
-  /// merit function of its line search. Returns NaN for other variants.
-  /// Valid for a rigid obstacle (lambda_scale = 1) only; the Kirchhoff
-  /// model's compliant-obstacle energy carries the factor itself.
+  /// this density (1/(2r)) (c [s_n]_-^2 - sigma_n^2), c = lambda_scale
+  /// (1 for a rigid obstacle; Lambda_n = c [s_n]_-, so c [s_n]_-^2 =
+  /// Lambda_n^2 / c); the driver uses J as the merit function of its line
+  /// search. Returns NaN for other variants.
   inline double
   contact_energy_density(const PointInput &in, const PointState &st)
   {
     if (in.theta != 1. || in.friction > 0.)
       return std::numeric_limits<double>::quiet_NaN();
-    return (st.lambda_n * st.lambda_n - in.sigma_n * in.sigma_n) / (2. * in.r);
+    return (st.lambda_n * st.lambda_n / in.lambda_scale -
+            in.sigma_n * in.sigma_n) /
+           (2. * in.r);
   }
 
   /// Linearised kinematic and stress quantities of one local shape

@@ -1696,10 +1696,27 @@ namespace NitscheContact
       if (dofs[k] != numbers::invalid_dof_index)
         bs[k] = b[dofs[k]];
     SolverControl control(2000, tolerance * bs.l2_norm());
+    last_error = std::numeric_limits<double>::infinity();
     if (symmetric)
       {
         SolverCG<Vector<double>> cg(control);
+        double lambda_min = 0.;
+        cg.connect_eigenvalues_slot(
+          [&lambda_min](const std::vector<double> &eigenvalues) {
+            if (!eigenvalues.empty())
+              lambda_min =
+                *std::min_element(eigenvalues.begin(), eigenvalues.end());
+          });
         cg.solve(A, xs, bs, *this);
+        // error estimate (last_error_estimate()): r = b - A x, z = B r
+        if (lambda_min > 0.)
+          {
+            Vector<double> r(bs.size()), z(bs.size());
+            A.vmult(r, xs);
+            r.sadd(-1., 1., bs);
+            vmult(z, r);
+            last_error = std::sqrt(std::max(r * z, 0.) / (0.5 * lambda_min));
+          }
       }
     else
       {

@@ -1105,6 +1105,16 @@ namespace NitscheContact
 
 
 
+  double
+  KirchhoffModel::last_solve_error() const
+  {
+    return use_multigrid && multigrid ?
+             multigrid->last_error_estimate() :
+             std::numeric_limits<double>::infinity();
+  }
+
+
+
   unsigned int
   KirchhoffModel::solve_linear()
   {

@@ -65,7 +65,13 @@ namespace NitscheContact
       s.multigrid          = (s.linear_solver == "multigrid");
       s.krylov_tolerance   = prm.get_double("Krylov tolerance");
       s.check_multigrid    = prm.get_bool("Check multigrid");
+      s.obstacle_compliance = prm.get_double("Obstacle compliance kappa");
       prm.leave_subsection();
+      if (!(s.obstacle_compliance >= 0. &&
+            std::isfinite(s.obstacle_compliance)))
+        bad_value("Mindlin/Obstacle compliance kappa",
+                  number_to_string(s.obstacle_compliance),
+                  "must be a finite number >= 0 (0: rigid obstacle)");
       if (!(s.krylov_tolerance > 0. && s.krylov_tolerance < 1.))
         bad_value("Mindlin/Krylov tolerance",
                   number_to_string(s.krylov_tolerance),
@@ -195,6 +201,23 @@ namespace NitscheContact
         "tolerance' (inexact Newton: max(1e-6, this value) while contact "
         "points change status, min(1e-6, max(this value, 0.1 tol "
         "|U|_a / |dU_prev|_a)) on a settled status). Must be in (0, 1).");
+      declare_entry(prm,
+        "Obstacle compliance kappa",
+        "0",
+        Patterns::Double(0.),
+        "Compliance kappa >= 0 of the obstacle (length per pressure), as "
+        "'Kirchhoff/Obstacle compliance kappa': the contact law is p >= 0, "
+        "w - psi + kappa p >= 0 (bottom face), complementarity; an elastic "
+        "(Winkler) obstacle of stiffness 1/kappa. 0: rigid obstacle. "
+        "Implemented as the factor 1/(1 + kappa r) on the Nitsche contact "
+        "stress (Lambda_n = [sigma_n - r (u_n - g)]_- / (1 + kappa r), as in "
+        "the GSV formula), so that the penalty r = gamma0 E / h_n and the "
+        "theta-terms stay those of the rigid obstacle. The obstacle's "
+        "penalty length (kappa D)^(1/4) is the width over which it spreads "
+        "the plate's edge reaction: once the mesh resolves it the Newton "
+        "iteration settles in a few steps (paper test: 4 iterations on the "
+        "finest cycle of 1.23M DoFs with kappa = 1e-5, 12 with a rigid "
+        "obstacle; doc/mindlin.md 4.3).");
       declare_entry(prm,
         "Check multigrid",
         "false",
@@ -327,6 +350,9 @@ namespace NitscheContact
                      (settings.contact_rule == "lobatto" ? " Gauss-Lobatto" :
                                                            " Gauss"));
     d.emplace_back("linear solver", settings.linear_solver);
+    if (settings.obstacle_compliance > 0.)
+      d.emplace_back("obstacle compliance kappa",
+                     number_to_string(settings.obstacle_compliance));
     return d;
   }
 
@@ -440,6 +466,7 @@ namespace NitscheContact
                          prm.thickness :
                          std::max(hx, hy);
     r = prm.gamma0 * prm.youngs_modulus / h_n;
+    lambda_scale = 1. / (1. + settings.obstacle_compliance * r);
     {
       const std::string w =
         theta_bending_bias_warning(prm, h_n, "Mindlin plate",
@@ -813,6 +840,7 @@ namespace NitscheContact
     in.r         = r;
     in.theta     = prm.theta;
     in.friction  = friction;
+    in.lambda_scale = lambda_scale;
     return in;
   }
 
@@ -1168,8 +1196,9 @@ namespace NitscheContact
     in.r         = r;
     in.theta     = prm.theta;
     in.normal[2] = -1.;
+    in.lambda_scale = lambda_scale;
     PointState active;
-    active.dlambda_n = 1.;
+    active.dlambda_n = lambda_scale;
     active.status    = PointStatus::stick;
     Vector<double> dummy(n);
     const auto restrict_to_parent = [&](const FullMatrix<double> &m,
@@ -1308,6 +1337,16 @@ namespace NitscheContact
       }
     update_multigrid();
     multigrid->apply(x, y);
+  }
+
+
+
+  double
+  MindlinModel::last_solve_error() const
+  {
+    return use_multigrid && multigrid ?
+             multigrid->last_error_estimate() :
+             std::numeric_limits<double>::infinity();
   }
 
 

@@ -335,6 +335,10 @@ CASES = [
      "set Model = kirchhoff\nsubsection Geometry\n  set Subdivisions = 2, 2\nend\n"
      "subsection Kirchhoff\n  set Obstacle compliance kappa = -1\nend",
      ["Obstacle compliance kappa", "-1", "pattern"]),
+    ("Mindlin kappa < 0",
+     "set Model = mindlin\nsubsection Geometry\n  set Subdivisions = 2, 2\nend\n"
+     "subsection Mindlin\n  set Obstacle compliance kappa = -1e-5\nend",
+     ["Obstacle compliance kappa", "-1e-5", "pattern"]),
     ("Kirchhoff exact gradient without an exact solution",
      "set Model = kirchhoff\nsubsection Geometry\n  set Subdivisions = 2, 2\nend\n"
      "subsection Kirchhoff\n  set Exact gradient = x; y\nend",

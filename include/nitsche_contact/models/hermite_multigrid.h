@@ -59,6 +59,7 @@
 #include <memory>
 #include <string>
 #include <unordered_map>
+#include <limits>
 #include <vector>
 
 namespace NitscheContact
@@ -322,6 +323,21 @@ namespace NitscheContact
           double                        tolerance,
           bool                          symmetric) const;
 
+    /// An estimate of the energy norm |x* - x|_A of the algebraic error of
+    /// the last solve() (A the Newton matrix, x* its exact solution), or
+    /// +infinity if there is none (GMRES, or no Krylov iteration). After
+    /// CG: e = A^{-1} r with the final residual r = b - A x, and for the
+    /// symmetric V-cycle B, |e|_A^2 = r^T A^{-1} r <= r^T B r /
+    /// lambda_min(BA); lambda_min is CG's own Lanczos estimate (the
+    /// smallest Ritz value of BA, which lies above the true one), halved
+    /// for safety. Costs one operator application and one V-cycle per
+    /// solve. Used by the driver's active-set stop (doc/design.md).
+    double
+    last_error_estimate() const
+    {
+      return last_error;
+    }
+
     /// y = A x in the caller's numbering.
     void
     apply(const dealii::Vector<double> &x, dealii::Vector<double> &y) const;
@@ -446,6 +462,8 @@ namespace NitscheContact
     /// the extra finest level: its operator, P_top and P_top^T, the
     /// caller's dof of each of its structured dofs, its status
     bool                                         has_top = false;
+    /// last_error_estimate()
+    mutable double last_error = std::numeric_limits<double>::infinity();
     HermiteCellOperator                          top;
     FloatMatrix                                  top_prolong, top_restrict;
     std::vector<dealii::types::global_dof_index> top_dofs;

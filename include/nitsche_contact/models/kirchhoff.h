@@ -95,6 +95,8 @@ namespace NitscheContact
       return true; // direct, or the multigrid's CG/GMRES (model.h)
     }
     double
+    last_solve_error() const override;
+    double
     increment_l2_relative() const override
     {
       return relative_l2(increment, solution);

@@ -103,6 +103,8 @@ namespace NitscheContact
       return true; // direct, or the multigrid's CG/GMRES (model.h)
     }
     double
+    last_solve_error() const override;
+    double
     increment_l2_relative() const override
     {
       return relative_l2(increment, solution);
@@ -181,6 +183,8 @@ namespace NitscheContact
       bool         multigrid        = false;
       double       krylov_tolerance = 1e-9;
       bool         check_multigrid  = false;
+      /// 'Obstacle compliance kappa' >= 0 (0: rigid obstacle)
+      double       obstacle_compliance = 0.;
       /// no warnings on the console (a plate solved inside another model,
       /// 'Elasticity/Plate predictor')
       bool         quiet            = false;
@@ -258,6 +262,9 @@ namespace NitscheContact
     double lambda; ///< 3D Lame lambda (used in sigma_n)
     double mu;     ///< shear modulus
     double r;      ///< Nitsche parameter gamma0 E / h_n
+    /// factor 1/(1 + kappa r) on the Nitsche contact stress (1: rigid
+    /// obstacle; 'Obstacle compliance kappa')
+    double lambda_scale = 1.;
     /// the last theta-term bias warning printed (repeated only when h_n,
     /// and with it the bias, changes)
     std::string bias_warning;
