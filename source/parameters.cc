@@ -612,8 +612,8 @@ namespace NitscheContact
         "the round-off floor) stops early and says so, and a full step "
         "below Tolerance that keeps the contact status also ends the "
         "cycle, as does, after the plate multigrids, a full step of any "
-        "size whose linear solve's estimated error is below it (see "
-        "'Active-set stop').");
+        "size that keeps the status when the estimated next correction is "
+        "below it (see 'Active-set stop').");
       declare_entry(prm, "Maximum iterations", "300",
                         Patterns::Integer(1, 100000),
                         "Iteration limit per cycle (per stage when a cycle "
@@ -687,13 +687,14 @@ namespace NitscheContact
         "step, so the accepted iterate's error stays below Tolerance), not "
         "the 3D model's 'amg' and 'two-level' Krylov solvers, whose "
         "stopping test does not control it. After the plate multigrids' "
-        "CG (theta = 1) the step may be of any size when the estimated "
-        "error of its linear solve is below Tolerance |U|_a (on the kept "
-        "status that error is the next Newton correction; estimate "
-        "sqrt(r.Br / lambda_min) from the final residual r, one V-cycle B "
-        "and CG's smallest Ritz value, halved): this saves the confirming "
-        "iteration on every such cycle. false: only the test after the "
-        "solve (the counts of sessions 1-23).");
+        "CG (theta = 1) the step may be of any size when an estimate of "
+        "the next Newton correction is below Tolerance |U|_a: "
+        "sqrt(R.BR / lambda_min) with the residual R, one V-cycle B and "
+        "the smallest Ritz value of the mesh's CG solves, halved, only when "
+        "those saw a well-conditioned BA (a heuristic bound, doc/design.md); "
+        "this saves the confirming iteration also where the last "
+        "status-changing step is larger than Tolerance. false: only the "
+        "test after the solve (the counts of sessions 1-23).");
       declare_entry(prm,
         "Fast line search", "true", Patterns::Bool(),
         "With the exact line search (see 'Line search'): evaluate the slope "

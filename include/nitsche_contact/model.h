@@ -256,14 +256,17 @@ namespace NitscheContact
       return false;
     }
 
-    /// An estimate, from above, of the energy norm of the algebraic error
-    /// of the last Newton correction (solve_linear()), +infinity when the
-    /// model has none: the plate multigrids' CG offers one
-    /// (HermiteMultigrid::last_error_estimate()). On an unchanged
-    /// frictionless status this is the size of the next Newton correction,
-    /// which the driver's active-set stop then need not compute.
+    /// An estimate, from above, of the energy norm of the Newton
+    /// correction at the current iterate (the residual of the last
+    /// assemble()) with the Newton matrix of the last solve_linear(),
+    /// computed without a solve; +infinity when the model has none. The
+    /// plate multigrids' CG offers one (HermiteMultigrid::error_estimate():
+    /// one V-cycle). When the contact status is that of the last Newton
+    /// matrix (frictionless), this is the size of the next Newton
+    /// correction, which the driver's active-set stop then need not
+    /// compute.
     virtual double
-    last_solve_error() const
+    estimated_correction() const
     {
       return std::numeric_limits<double>::infinity();
     }

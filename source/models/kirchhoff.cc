@@ -1106,10 +1106,11 @@ namespace NitscheContact
 
 
   double
-  KirchhoffModel::last_solve_error() const
+  KirchhoffModel::estimated_correction() const
   {
+    // (rhs holds -R at the last assembled iterate)
     return use_multigrid && multigrid ?
-             multigrid->last_error_estimate() :
+             multigrid->error_estimate(rhs) :
              std::numeric_limits<double>::infinity();
   }
 

@@ -533,6 +533,16 @@ main(int argc, char **argv)
     "mindlin membrane theta=1",
     prm_text("mindlin", 1., 0.,
              "subsection Mindlin\n  set Membrane unknowns = true\nend\n"));
+  // an elastic obstacle, kappa r = 4 (r = gamma0 E / t = 4e8): the factor
+  // 1/(1 + kappa r) in the residual, the Jacobian, the energy and the
+  // friction threshold
+  const std::string compliant =
+    "subsection Mindlin\n  set Obstacle compliance kappa = 1e-8\nend\n";
+  check_model<MindlinModel>("mindlin kappa=1e-8 theta=1",
+                            prm_text("mindlin", 1., 0., compliant));
+  check_model<MindlinModel>("mindlin friction 0.2 kappa=1e-8 theta=-1",
+                            prm_text("mindlin", -1., 0.2, compliant),
+                            12);
   for (const double theta : {1., 0., -1.})
     check_model<MindlinModel>("mindlin friction 0.2 theta=" +
                                 std::to_string(int(theta)),

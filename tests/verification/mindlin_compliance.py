@@ -26,7 +26,7 @@
  3. kappa -> 0: the paper's test with kappa = 1e-4, 1e-5, 1e-6 approaches
     the rigid-obstacle solution, the deflection difference shrinking
     roughly like kappa (each step by more than 4)."""
-from common import parse_args, run, check, close, finish
+from common import parse_args, run, check, close, finish, shipped_prm
 
 args = parse_args()
 
@@ -93,66 +93,24 @@ for theta, kappa, solver in ((0, 1e-3, "Amesos_Mumps"), (0, 1e-3, "multigrid"),
         close(c["contact_force"], Q * 1.0, 1e-9, tag + " cycle %d: reaction q |Omega|"
               % c["cycle"])
 
-PAPER = """
-subsection Geometry
-  set Length x = 10
-  set Length y = 10
-  set Thickness = 0.01
-  set Edge conditions = clamped, clamped, clamped, clamped
-end
-subsection Material
-  set Young's modulus = 2e5
-  set Poisson ratio = 0.3
-end
-subsection Load
-  set Transverse load = -0.02
-end
-subsection Obstacle
-  set Level = -1
-  set Plate obstacle convention = bottom face
-end
-subsection Output
-  set Probe points = 5, 5; 2.5, 5; 1, 5; 2.5, 2.5
-end
-subsection Nonlinear solver
-  set Tolerance = 1e-8
-  set Maximum iterations = 300
-end
-"""
+PROBES = "5, 5; 2.5, 5; 1, 5; 2.5, 2.5"
 
 
-def mindlin(kappa, cycles=4):
-    return PAPER + """
-set Model = mindlin
-subsection Geometry
-  set Subdivisions = 8, 8
-  set Number of cycles = %d
-end
-subsection Contact
-  set Nitsche theta = 1
-  set Nitsche gamma0 = 200
-end
-subsection Mindlin
-  set Obstacle compliance kappa = %g
-  set Contact quadrature points = 2
-  set Contact quadrature rule = lobatto
-end
-""" % (cycles, kappa)
+def mindlin(kappa):
+    """parameters/paper_mindlin.prm (8^2 -> 64^2, theta = 1, gamma0 = 200,
+    tolerance 1e-8) with vertex contact points and the compliance kappa."""
+    return shipped_prm("paper_mindlin.prm", [
+        ("Probe points", PROBES),
+        ("Membrane unknowns", "auto\n  set Obstacle compliance kappa = %g\n"
+         "  set Contact quadrature points = 2\n"
+         "  set Contact quadrature rule = lobatto" % kappa)])
 
 
 soft = 0.05
 m, _ = run(args, "paper_mindlin_soft", mindlin(soft))
-k, _ = run(args, "paper_kirchhoff_soft", PAPER + """
-set Model = kirchhoff
-subsection Geometry
-  set Subdivisions = 16, 16
-  set Number of cycles = 3
-end
-subsection Kirchhoff
-  set Stabilisation alpha = 0
-  set Obstacle compliance kappa = %g
-end
-""" % soft)
+k, _ = run(args, "paper_kirchhoff_soft", shipped_prm("paper_kirchhoff.prm", [
+    ("Probe points", PROBES), ("Tolerance", "1e-8"), ("Stabilisation alpha", "0"),
+    ("Obstacle compliance kappa", str(soft))]))
 rigid, _ = run(args, "paper_mindlin_rigid", mindlin(0.))
 m, k, rigid = m["cycles"][-1], k["cycles"][-1], rigid["cycles"][-1]
 check(m["converged"] and k["converged"] and rigid["converged"], "paper test runs converged")

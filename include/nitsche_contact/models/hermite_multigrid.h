@@ -323,20 +323,25 @@ namespace NitscheContact
           double                        tolerance,
           bool                          symmetric) const;
 
-    /// An estimate of the energy norm |x* - x|_A of the algebraic error of
-    /// the last solve() (A the Newton matrix, x* its exact solution), or
-    /// +infinity if there is none (GMRES, or no Krylov iteration). After
-    /// CG: e = A^{-1} r with the final residual r = b - A x, and for the
-    /// symmetric V-cycle B, |e|_A^2 = r^T A^{-1} r <= r^T B r /
-    /// lambda_min(BA); lambda_min is CG's own Lanczos estimate (the
-    /// smallest Ritz value of BA, which lies above the true one), halved
-    /// for safety. Costs one operator application and one V-cycle per
-    /// solve. Used by the driver's active-set stop (doc/design.md).
+    /// An estimate from above of |A^{-1} r|_A, the energy norm of the
+    /// correction that the Newton matrix A of the last set_status() gives
+    /// for the right-hand side r (caller's numbering), or +infinity if
+    /// there is none. For the symmetric V-cycle B, |A^{-1} r|_A^2 =
+    /// r^T A^{-1} r <= r^T B r / lambda_min(BA); lambda_min is taken from
+    /// the Lanczos tridiagonals of the CG solves on this mesh (the smallest
+    /// Ritz value seen, which lies above the true one) and halved for
+    /// safety, and only when those solves saw a well-conditioned BA
+    /// (largest over smallest Ritz value <= max_condition_for_estimate);
+    /// +infinity after GMRES. A heuristic bound: the Ritz value is an
+    /// estimate. One V-cycle. Used by the driver's active-set stop with the
+    /// residual at an iterate whose status is that of A, where A^{-1} r is
+    /// the next Newton correction (doc/design.md).
     double
-    last_error_estimate() const
-    {
-      return last_error;
-    }
+    error_estimate(const dealii::Vector<double> &r) const;
+
+    /// The largest Ritz condition number at which error_estimate() gives
+    /// a bound.
+    static constexpr double max_condition_for_estimate = 50.;
 
     /// y = A x in the caller's numbering.
     void
@@ -462,8 +467,11 @@ namespace NitscheContact
     /// the extra finest level: its operator, P_top and P_top^T, the
     /// caller's dof of each of its structured dofs, its status
     bool                                         has_top = false;
-    /// last_error_estimate()
-    mutable double last_error = std::numeric_limits<double>::infinity();
+    /// error_estimate(): the extreme Ritz values of BA over the CG solves
+    /// on this mesh, and whether the last solve was CG
+    mutable double ritz_min = std::numeric_limits<double>::infinity();
+    mutable double ritz_max = 0.;
+    mutable bool   last_solve_symmetric = false;
     HermiteCellOperator                          top;
     FloatMatrix                                  top_prolong, top_restrict;
     std::vector<dealii::types::global_dof_index> top_dofs;
