@@ -246,7 +246,8 @@ namespace NitscheContact
     /// small fraction of the correction itself: direct solves (exact up to
     /// round-off) and the plate multigrids (CG/GMRES on the true residual
     /// preconditioned by a V-cycle; measured 1-15 % of the step with their
-    /// loose solves while the status changes). The driver's active-set stop
+    /// loose solves while the status changes; not with a 'Krylov tolerance'
+    /// looser than those). The driver's active-set stop
     /// relies on it. Not the 3D Krylov solvers (AMG, two-level), which stop
     /// on a preconditioned l2 residual that the thin plate's deflection
     /// dominates: a review measured an error of 86-114 % of the step there.

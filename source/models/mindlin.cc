@@ -67,7 +67,6 @@ namespace NitscheContact
       s.check_multigrid    = prm.get_bool("Check multigrid");
       s.obstacle_compliance = prm.get_double("Obstacle compliance kappa");
       prm.leave_subsection();
-
       if (!(s.krylov_tolerance > 0. && s.krylov_tolerance < 1.))
         bad_value("Mindlin/Krylov tolerance",
                   number_to_string(s.krylov_tolerance),
