@@ -214,13 +214,18 @@ namespace NitscheContact
             if (!small_step)
               {
                 timer.restart();
-                // (not for a rigid motion, whose |U|_a is round-off: see
+                // (the norms only for a model that offers an estimate;
+                // not for a rigid motion, whose |U|_a is round-off: see
                 // the Euclidean test after the solve below)
-                const double u    = model.solution_energy_norm();
-                const double work = model.load_work();
-                if (u > 0. && !(std::isfinite(work) &&
-                                u * u <= 1e-12 * std::abs(work)))
-                  estimate = model.estimated_correction() / u;
+                const double e = model.estimated_correction();
+                if (std::isfinite(e))
+                  {
+                    const double u    = model.solution_energy_norm();
+                    const double work = model.load_work();
+                    if (u > 0. && !(std::isfinite(work) &&
+                                    u * u <= 1e-12 * std::abs(work)))
+                      estimate = e / u;
+                  }
                 t.solve += timer.wall_time();
               }
             if (small_step || estimate <= prm.tolerance)
