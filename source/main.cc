@@ -5,8 +5,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
-#include <nitsche_contact/driver.h>
-#include <nitsche_contact/model_factory.h>
+#include <nitsche_contact/driver/driver.h>
+#include <nitsche_contact/model_registry.h>
 #include <nitsche_contact/parameters.h>
 
 #include <filesystem>
@@ -77,10 +77,13 @@ namespace
       << "Usage: nitsche-contact [--help] [--print-parameters] FILE.prm\n"
          "\n"
          "Solves the contact problem described by the deal.II parameter file\n"
-         "FILE.prm with the model selected by 'set Model = elasticity |\n"
-         "mindlin | kirchhoff' and writes summary.json, convergence tables,\n"
-         "a deflection profile and VTU/PVD files to 'Output/Directory'.\n"
-         "\n"
+         "FILE.prm with the model selected by 'set Model' and writes\n"
+         "summary.json, convergence tables, a deflection profile and VTU/PVD\n"
+         "files to 'Output/Directory'. Models:\n";
+    for (const auto &m : NitscheContact::ModelRegistry::entries())
+      out << "  " << m.name << std::string(m.name.size() < 20 ? 21 - m.name.size() : 1, ' ')
+          << m.description << "\n";
+    out << "\n"
          "  --help               print this message and exit\n"
          "  --print-parameters   print every parameter with its documentation\n"
          "                       and default value (a complete .prm) and exit\n"
@@ -109,7 +112,7 @@ main(int argc, char *argv[])
 
   dealii::ParameterHandler prm;
   CommonParameters::declare(prm);
-  declare_model_parameters(prm);
+  ModelRegistry::declare_parameters(prm);
 
   std::string file;
   for (int i = 1; i < argc; ++i)
@@ -202,7 +205,7 @@ main(int argc, char *argv[])
 
       CommonParameters common;
       common.parse(prm);
-      auto model = create_model(common, prm, MPI_COMM_WORLD);
+      auto model = ModelRegistry::create(common, prm, MPI_COMM_WORLD);
       // Some input is only found invalid when the mesh exists (a refinement
       // box without cells, magnitudes that overflow the cell matrices),
       // after the driver made the output directory: a directory this run

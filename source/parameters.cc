@@ -4,6 +4,7 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/base/utilities.h>
 
+#include <nitsche_contact/model_registry.h>
 #include <nitsche_contact/parameters.h>
 
 #include <algorithm>
@@ -101,26 +102,6 @@ namespace NitscheContact
                             (dim == 3 ? " x [-t/2, t/2]" : ""));
               }
           }
-  }
-
-  double
-  check_equilibrium(const double       residual_norm,
-                    const double       internal_norm,
-                    const double       load_norm,
-                    const bool         allow,
-                    const std::string &causes,
-                    const double       limit)
-  {
-    const double scale = std::max(internal_norm, load_norm);
-    const double relative = scale > 0. ? residual_norm / scale : 0.;
-    if (!(relative <= limit) && !allow)
-      throw ConvergenceFailure(
-        "the accepted iterate is not an equilibrium (|R| / max(|A U|, |F|) "
-        "= " + number_to_string(relative) + " > " + number_to_string(limit) +
-        "): the nonlinear solver's stopping test (a correction "
-        "below 'Nonlinear solver/Tolerance' relative to |U| on a settled "
-        "contact status) passed without a solution. " + causes);
-    return relative;
   }
 
   void
@@ -479,14 +460,15 @@ namespace NitscheContact
   void
   CommonParameters::declare(ParameterHandler &prm)
   {
-    declare_entry(prm, "Model",
-                      "elasticity",
-                      Patterns::Anything(),
-                      "Which model solves the problem: 'elasticity' (3D "
-                      "linear elasticity, Nitsche contact and Coulomb "
-                      "friction on the bottom face), 'mindlin' "
-                      "(Reissner-Mindlin plate) or 'kirchhoff' "
-                      "(Kirchhoff-Love plate).");
+    std::string models;
+    for (const ModelRegistry::Entry &m : ModelRegistry::entries())
+      models += (models.empty() ? "" : ", ") + m.name + " (" +
+                m.description + ")";
+    declare_entry(prm,
+                  "Model",
+                  "elasticity",
+                  Patterns::Selection(ModelRegistry::selection_pattern()),
+                  "The model that solves the problem: " + models + ".");
 
     prm.enter_subsection("Geometry");
     {
@@ -982,25 +964,25 @@ namespace NitscheContact
 
     prm.enter_subsection("Nonlinear solver");
     {
-      scheme    = prm.get("Scheme") == "newton" ? NonlinearScheme::newton :
+      nonlinear.scheme    = prm.get("Scheme") == "newton" ? NonlinearScheme::newton :
                                                   NonlinearScheme::fixed_point;
-      tolerance = prm.get_double("Tolerance");
+      nonlinear.tolerance = prm.get_double("Tolerance");
       // (a relative size of the correction: 1 or more would accept any
       // iterate, the cold start's first included)
-      if (!(tolerance > 0. && tolerance < 1.))
-        bad_value("Nonlinear solver/Tolerance", number_to_string(tolerance),
+      if (!(nonlinear.tolerance > 0. && nonlinear.tolerance < 1.))
+        bad_value("Nonlinear solver/Tolerance", number_to_string(nonlinear.tolerance),
                   "must lie in (0, 1)");
-      max_iterations        = prm.get_integer("Maximum iterations");
-      line_search           = prm.get_bool("Line search");
+      nonlinear.max_iterations        = prm.get_integer("Maximum iterations");
+      nonlinear.line_search           = prm.get_bool("Line search");
       allow_non_convergence = prm.get_bool("Allow non-convergence");
-      print_iterations      = prm.get_bool("Print iterations");
+      nonlinear.print_iterations      = prm.get_bool("Print iterations");
       load_steps            = prm.get_integer("Load steps");
       friction_steps        = prm.get_integer("Friction steps");
-      damping_after         = prm.get_integer("Damping after");
-      nonmonotone_window    = prm.get_integer("Nonmonotone window");
-      active_set_stop       = prm.get_bool("Active-set stop");
-      fast_line_search      = prm.get_bool("Fast line search");
-      damping_without_decrease =
+      nonlinear.damping_after         = prm.get_integer("Damping after");
+      nonlinear.nonmonotone_window    = prm.get_integer("Nonmonotone window");
+      nonlinear.active_set_stop       = prm.get_bool("Active-set stop");
+      nonlinear.fast_line_search      = prm.get_bool("Fast line search");
+      nonlinear.damping_without_decrease =
         prm.get_integer("Damping after no decrease");
       reuse_factorization   = prm.get_bool("Reuse factorization");
       stick_on_reversal     = prm.get_bool("Stick step on slip reversal");

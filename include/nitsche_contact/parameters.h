@@ -13,6 +13,7 @@
 #include <deal.II/base/quadrature.h>
 
 #include <nitsche_contact/nitsche_kernel.h>
+#include <nitsche_contact/nonlinear/nonlinear_solver.h>
 
 #include <array>
 #include <memory>
@@ -155,20 +156,10 @@ namespace NitscheContact
     }
 
     // "Nonlinear solver"
-    NonlinearScheme scheme                 = NonlinearScheme::newton;
-    double          tolerance              = 1e-10;
-    unsigned int    max_iterations         = 50;
-    bool            line_search            = true;
+    NonlinearSettings nonlinear;
     bool            allow_non_convergence  = false;
-    bool            print_iterations       = true;
     unsigned int    load_steps             = 1;
     unsigned int    friction_steps         = 0;
-    unsigned int    damping_after          = 100000;
-    unsigned int    nonmonotone_window     = 5;
-    /// Nonlinear solver/Active-set stop
-    bool            active_set_stop        = true;
-    bool            fast_line_search       = true;
-    unsigned int    damping_without_decrease = 20;
     bool            reuse_factorization    = true;
     /// Nonlinear solver/Stick step on slip reversal
     bool            stick_on_reversal      = true;
@@ -292,19 +283,6 @@ namespace NitscheContact
                         double                       length_y,
                         double                       thickness,
                         bool                         interior = false);
-
-  /// Equilibrium check of an accepted iterate (3D and Mindlin models):
-  /// returns |R| / max(|A U|, |F|) from the norms of the residual, the
-  /// internal force A U and the applied load, and throws ConvergenceFailure
-  /// when it exceeds 'limit' unless 'allow' ('Allow non-convergence'); the
-  /// message ends with the model's likely 'causes'.
-  double
-  check_equilibrium(double             residual_norm,
-                    double             internal_norm,
-                    double             load_norm,
-                    bool               allow,
-                    const std::string &causes,
-                    double             limit = 1e-4);
 
   /// bad_value(entry, expression, ...) for a function value that is not a
   /// finite number at the quadrature point p of an assembly (the grid of

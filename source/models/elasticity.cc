@@ -20,6 +20,8 @@
 #include <deal.II/numerics/data_postprocessor.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <nitsche_contact/model_registry.h>
+#include <nitsche_contact/nonlinear/stopping_rules.h>
 #include <nitsche_contact/models/elasticity.h>
 
 #include <array>
@@ -1856,11 +1858,9 @@ namespace NitscheContact
     return -(residual * increment);
   }
 
-  bool
-  ElasticityModel::prepare_line_search()
+  void
+  ElasticityModel::prepare_line_slope()
   {
-    if (!has_energy())
-      return false;
     // Along U(t) = U_base + t dU the residual tested with dU is
     //   phi'(t) = dU.(C U_base - F) + t dU.C dU
     //             - sum over active points of w min(s_n(t), 0) m,
@@ -1939,7 +1939,6 @@ namespace NitscheContact
       });
     line_constant = constant + Utilities::MPI::sum(local_constant, comm);
     line_linear   = linear + Utilities::MPI::sum(local_linear, comm);
-    return true;
   }
 
   double
@@ -2302,3 +2301,7 @@ namespace NitscheContact
     return written;
   }
 } // namespace NitscheContact
+
+NITSCHE_CONTACT_REGISTER_MODEL(NitscheContact::ElasticityModel,
+                               "elasticity",
+                               "3D linear elasticity, Nitsche contact and Coulomb friction on the bottom face")

@@ -12,6 +12,8 @@
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/numerics/data_out.h>
 
+#include <nitsche_contact/model_registry.h>
+#include <nitsche_contact/nonlinear/stopping_rules.h>
 #include <nitsche_contact/models/kirchhoff.h>
 
 #include <algorithm>
@@ -1105,13 +1107,13 @@ namespace NitscheContact
 
 
 
-  double
+  std::optional<double>
   KirchhoffModel::estimated_correction() const
   {
     // (rhs holds -R at the last assembled iterate)
-    return use_multigrid && multigrid ?
-             multigrid->error_estimate(rhs) :
-             std::numeric_limits<double>::infinity();
+    if (use_multigrid && multigrid)
+      return multigrid->error_estimate(rhs);
+    return std::nullopt;
   }
 
 
@@ -1133,7 +1135,7 @@ namespace NitscheContact
           status_settled,
           krylov_tolerance,
           loose_krylov_tolerance,
-          prm.tolerance,
+          prm.nonlinear.tolerance,
           status_settled ? energy_norm(increment) : 0.,
           status_settled ? energy_norm(solution) : 0.);
         try
@@ -1264,11 +1266,9 @@ namespace NitscheContact
 
 
 
-  bool
-  KirchhoffModel::prepare_line_search()
+  void
+  KirchhoffModel::prepare_line_slope()
   {
-    if (!has_energy() || prm.friction > 0.)
-      return false;
     // Along U(t) = U_base + t dU every point quantity is affine in t:
     //   sigma_n(t) = sigma0 + t dsigma,  u_n(t) = u0 + t du,
     //   s_n(t) = s0 + t ds,  ds = dsigma - r du,
@@ -1359,7 +1359,6 @@ namespace NitscheContact
                               switching[c].begin(),
                               switching[c].end());
       }
-    return true;
   }
 
 
@@ -1700,3 +1699,7 @@ namespace NitscheContact
     return {{"solution", record}};
   }
 } // namespace NitscheContact
+
+NITSCHE_CONTACT_REGISTER_MODEL(NitscheContact::KirchhoffModel,
+                               "kirchhoff",
+                               "Kirchhoff-Love plate, C1 bicubic Hermite element, GSV-stabilised or Nitsche contact")

@@ -15,6 +15,8 @@
 #include <deal.II/numerics/vector_tools.h>
 
 
+#include <nitsche_contact/model_registry.h>
+#include <nitsche_contact/nonlinear/stopping_rules.h>
 #include <nitsche_contact/models/mindlin.h>
 
 #include <cmath>
@@ -1265,7 +1267,7 @@ namespace NitscheContact
       last_changed == 0,
       settings.krylov_tolerance,
       loose,
-      prm.tolerance,
+      prm.nonlinear.tolerance,
       energy_norm(increment),
       energy_norm(solution));
     try
@@ -1335,13 +1337,13 @@ namespace NitscheContact
 
 
 
-  double
+  std::optional<double>
   MindlinModel::estimated_correction() const
   {
     // (residual holds -R at the last assembled iterate)
-    return use_multigrid && multigrid ?
-             multigrid->error_estimate(residual) :
-             std::numeric_limits<double>::infinity();
+    if (use_multigrid && multigrid)
+      return multigrid->error_estimate(residual);
+    return std::nullopt;
   }
 
 
@@ -1882,3 +1884,7 @@ namespace NitscheContact
     return {{"solution", record}};
   }
 } // namespace NitscheContact
+
+NITSCHE_CONTACT_REGISTER_MODEL(NitscheContact::MindlinModel,
+                               "mindlin",
+                               "Reissner-Mindlin plate, MITC elements, the 3D Nitsche terms under plate kinematics")

@@ -35,7 +35,7 @@
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <nitsche_contact/model_factory.h>
+#include <nitsche_contact/model_registry.h>
 #include <nitsche_contact/models/elasticity.h>
 #include <nitsche_contact/models/kirchhoff.h>
 #include <nitsche_contact/models/mindlin.h>
@@ -97,7 +97,7 @@ namespace
   {
     explicit ModelOnFirstMesh(const std::string &text)
       : common(parse(prm, text))
-      , base(create_model(common, prm, MPI_COMM_WORLD))
+      , base(ModelRegistry::create(common, prm, MPI_COMM_WORLD))
       , model(dynamic_cast<Model &>(*base))
     {
       model.setup_cycle(0);
@@ -106,7 +106,7 @@ namespace
     parse(ParameterHandler &prm, const std::string &text)
     {
       CommonParameters::declare(prm);
-      declare_model_parameters(prm);
+      ModelRegistry::declare_parameters(prm);
       prm.parse_input_from_string(text);
       CommonParameters common;
       common.parse(prm);

@@ -25,7 +25,13 @@
 
 namespace NitscheContact
 {
-  class ElasticityModel : public ContactModel
+  class ElasticityModel : public ContactModel,
+                          public PotentialEnergy,
+                          public FastLineSlope,
+                          public SolveAccuracy,
+                          public RigidMotionScale,
+                          public FrictionContinuation,
+                          public PredictedStart
   {
   public:
     static void
@@ -35,10 +41,20 @@ namespace NitscheContact
                     dealii::ParameterHandler &prm,
                     MPI_Comm                  comm);
 
-    std::string
-    name() const override
+    ModelDescription
+    describe() const override
     {
-      return "elasticity";
+      return {"elasticity", description(), weak_penalty_warnings(prm.gamma0)};
+    }
+    ProblemSize
+    problem_size() const override
+    {
+      return {n_dofs(), mesh_size()};
+    }
+    EnergyNorms
+    energy_norms() const override
+    {
+      return {increment_energy_norm(), solution_energy_norm()};
     }
     /// The Mindlin plate of 'Plate predictor' (nullptr without).
     ContactModel *
@@ -48,8 +64,13 @@ namespace NitscheContact
     }
     std::vector<unsigned int>
     predictor_cycles(unsigned int cycle) const override;
+    std::string
+    predictor_entry() const override
+    {
+      return "Elasticity/Plate predictor";
+    }
     std::vector<std::pair<std::string, std::string>>
-    description() const override;
+    description() const;
     void
     setup_cycle(unsigned int cycle) override;
     void
@@ -60,9 +81,9 @@ namespace NitscheContact
     void
     set_friction_scale(double scale) override;
     std::uint64_t
-    n_dofs() const override;
+    n_dofs() const;
     double
-    mesh_size() const override;
+    mesh_size() const;
     ContactCounts
     assemble(NonlinearScheme scheme, bool with_matrix) override;
     unsigned int
@@ -79,7 +100,12 @@ namespace NitscheContact
       return load_factor * (load * solution);
     }
     bool
-    prepare_line_search() override;
+    has_energy() const override
+    {
+      return prm.theta == 1. && friction == 0.;
+    }
+    void
+    prepare_line_slope() override;
     double
     line_slope(double t) const override;
     double
@@ -92,10 +118,15 @@ namespace NitscheContact
     {
       return linear_solver == "direct";
     }
+    std::optional<double>
+    estimated_correction() const override
+    {
+      return std::nullopt;
+    }
     double
-    increment_energy_norm() const override;
+    increment_energy_norm() const;
     double
-    solution_energy_norm() const override;
+    solution_energy_norm() const;
     CycleResults
     postprocess(const std::vector<dealii::Point<2>> &probes) override;
     std::vector<ContactPointRecord>
@@ -304,12 +335,6 @@ namespace NitscheContact
     double                     friction = 0.;
     /// friction switched on or off since theta_matrix was built
     bool                       theta_matrix_stale = false;
-    /// theta = 1 and no friction in use: the residual is the gradient of J
-    bool
-    has_energy() const
-    {
-      return prm.theta == 1. && friction == 0.;
-    }
     double                     last_contact_energy = 0.;
     double                     relative_residual   = 0.; ///< |R|/|AU| at postprocess
     unsigned long last_changed = 0; ///< status changes of the last matrix

@@ -35,7 +35,12 @@
 
 namespace NitscheContact
 {
-  class KirchhoffModel : public ContactModel
+  class KirchhoffModel : public ContactModel,
+                         public PotentialEnergy,
+                         public FastLineSlope,
+                         public SolveAccuracy,
+                         public RigidMotionScale,
+                         public ResidualScale
   {
   public:
     /// Declare the subsection "Kirchhoff".
@@ -46,19 +51,33 @@ namespace NitscheContact
                    dealii::ParameterHandler &prm,
                    MPI_Comm                  comm);
 
-    std::string
-    name() const override
+    ModelDescription
+    describe() const override
     {
-      return "kirchhoff";
+      return {"kirchhoff",
+              description(),
+              formulation == Formulation::nitsche ?
+                weak_penalty_warnings(prm.gamma0) :
+                std::vector<std::string>()};
+    }
+    ProblemSize
+    problem_size() const override
+    {
+      return {n_dofs(), mesh_size()};
+    }
+    EnergyNorms
+    energy_norms() const override
+    {
+      return {increment_energy_norm(), solution_energy_norm()};
     }
     std::vector<std::pair<std::string, std::string>>
-    description() const override;
+    description() const;
     void
     setup_cycle(unsigned int cycle) override;
     std::uint64_t
-    n_dofs() const override;
+    n_dofs() const;
     double
-    mesh_size() const override;
+    mesh_size() const;
     ContactCounts
     assemble(NonlinearScheme scheme, bool with_matrix) override;
     unsigned int
@@ -86,7 +105,9 @@ namespace NitscheContact
     double
     energy_slope() const override;
     bool
-    prepare_line_search() override;
+    has_energy() const override;
+    void
+    prepare_line_slope() override;
     double
     line_slope(double t) const override;
     bool
@@ -97,7 +118,7 @@ namespace NitscheContact
       // from 1-iteration solves at 'Krylov tolerance' 0.3 accepted)
       return !use_multigrid || krylov_tolerance <= loose_krylov_tolerance;
     }
-    double
+    std::optional<double>
     estimated_correction() const override;
     double
     increment_l2_relative() const override
@@ -105,9 +126,9 @@ namespace NitscheContact
       return relative_l2(increment, solution);
     }
     double
-    increment_energy_norm() const override;
+    increment_energy_norm() const;
     double
-    solution_energy_norm() const override;
+    solution_energy_norm() const;
     CycleResults
     postprocess(const std::vector<dealii::Point<2>> &probes) override;
     std::vector<ContactPointRecord>
@@ -211,8 +232,6 @@ namespace NitscheContact
     energy_norm(const dealii::Vector<double> &v) const;
     /// Whether the formulation is the gradient of an energy (theta = 1, or
     /// the pure penalty).
-    bool
-    has_energy() const;
     /// Contact energy density at a point (see energy()).
     static double
     energy_density(const PointInput &in, const PointState &st);

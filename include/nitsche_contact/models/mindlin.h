@@ -52,7 +52,11 @@ namespace NitscheContact
    *
    * The model runs on one MPI process (direct solver on a serial mesh).
    */
-  class MindlinModel : public ContactModel
+  class MindlinModel : public ContactModel,
+                       public PotentialEnergy,
+                       public SolveAccuracy,
+                       public RigidMotionScale,
+                       public FrictionContinuation
   {
   public:
     static void
@@ -62,19 +66,29 @@ namespace NitscheContact
                  dealii::ParameterHandler &prm,
                  MPI_Comm                  comm);
 
-    std::string
-    name() const override
+    ModelDescription
+    describe() const override
     {
-      return "mindlin";
+      return {"mindlin", description(), weak_penalty_warnings(prm.gamma0)};
+    }
+    ProblemSize
+    problem_size() const override
+    {
+      return {n_dofs(), mesh_size()};
+    }
+    EnergyNorms
+    energy_norms() const override
+    {
+      return {increment_energy_norm(), solution_energy_norm()};
     }
     std::vector<std::pair<std::string, std::string>>
-    description() const override;
+    description() const;
     void
     setup_cycle(unsigned int cycle) override;
     std::uint64_t
-    n_dofs() const override;
+    n_dofs() const;
     double
-    mesh_size() const override;
+    mesh_size() const;
     ContactCounts
     assemble(NonlinearScheme scheme, bool with_matrix) override;
     unsigned int
@@ -88,6 +102,12 @@ namespace NitscheContact
     }
     void
     set_friction_scale(double scale) override;
+    /// theta = 1 and no friction in use: the residual is the gradient of J
+    bool
+    has_energy() const override
+    {
+      return prm.theta == 1. && friction == 0.;
+    }
     double
     energy() const override;
     double
@@ -105,7 +125,7 @@ namespace NitscheContact
       // changes, on which the measurement rests
       return !use_multigrid || settings.krylov_tolerance <= 1e-6;
     }
-    double
+    std::optional<double>
     estimated_correction() const override;
     double
     increment_l2_relative() const override
@@ -113,9 +133,9 @@ namespace NitscheContact
       return relative_l2(increment, solution);
     }
     double
-    increment_energy_norm() const override;
+    increment_energy_norm() const;
     double
-    solution_energy_norm() const override;
+    solution_energy_norm() const;
     CycleResults
     postprocess(const std::vector<dealii::Point<2>> &probes) override;
     std::vector<ContactPointRecord>
@@ -343,12 +363,6 @@ namespace NitscheContact
     double                     friction = 0.;
     /// friction switched on or off since the constant part was built
     bool                       constant_part_stale = false;
-    /// theta = 1 and no friction in use: the residual is the gradient of J
-    bool
-    has_energy() const
-    {
-      return prm.theta == 1. && friction == 0.;
-    }
   };
 } // namespace NitscheContact
 

@@ -1,0 +1,129 @@
+// The common contact driver: refinement cycles with nested iteration, the
+// stages of a cycle (load steps, friction steps, the predictor), and the
+// records of every cycle (log, convergence table, summary.json, the
+// deflection profile, the contact points and the ParaView records).
+#ifndef nitsche_contact_driver_h
+#define nitsche_contact_driver_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
+
+#include <nitsche_contact/model.h>
+#include <nitsche_contact/nonlinear/nonlinear_solver.h>
+#include <nitsche_contact/parameters.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace NitscheContact
+{
+  class ContactDriver
+  {
+  public:
+    ContactDriver(const CommonParameters &prm, MPI_Comm comm);
+
+    /// Run all cycles; throws ConvergenceFailure if a cycle does not
+    /// converge (unless allowed in the parameters).
+    void
+    run(ContactModel &model);
+
+  private:
+    /// One nonlinear solve of a cycle: the load factor and the fraction of
+    /// the friction coefficient it applies, and its log line.
+    struct Stage
+    {
+      double      load_factor    = 1.;
+      double      friction_scale = 1.;
+      std::string label;
+    };
+
+    /// What the driver records of a cycle.
+    struct CycleRecord
+    {
+      unsigned int  cycle      = 0;
+      std::uint64_t n_dofs     = 0;
+      double        h          = 0.;
+      unsigned int  iterations = 0;
+      /// Krylov iterations summed over the cycle (0 with direct solvers)
+      unsigned long linear_iterations = 0;
+      bool          converged  = false;
+      ContactCounts counts;
+      CycleResults  results;
+      PhaseTimes    times;
+      /// the predictor's DoFs on its last cycle (0: no predictor), its
+      /// iterations and seconds (part of times.setup) for this cycle
+      std::uint64_t predictor_dofs       = 0;
+      unsigned int  predictor_iterations = 0;
+      double        predictor_seconds    = 0.;
+    };
+
+    /// Load steps on the first cycle, then the friction continuation.
+    std::vector<Stage>
+    stages_of_cycle(unsigned int cycle) const;
+
+    /// Log the model's description and warnings.
+    void
+    announce(const ContactModel &model) const;
+
+    /// Solve the predictor (if any) and set up the model's cycle; appends
+    /// the cycle's record.
+    void
+    start_cycle(ContactModel &model, unsigned int cycle, const Stage &first);
+
+    /// Solve every stage of the cycle; false if one did not converge.
+    bool
+    solve_stages(ContactModel            &model,
+                 unsigned int             cycle,
+                 const std::vector<Stage> &stages);
+
+    /// After a cycle that did not converge: a warning with 'Allow
+    /// non-convergence', a ConvergenceFailure otherwise.
+    void
+    handle_non_convergence(const ContactModel &model, unsigned int cycle);
+
+    /// Postprocess and write the cycle's output.
+    void
+    finish_cycle(ContactModel &model, unsigned int cycle);
+
+    /// Solve the model's predictor on its cycles `cycles` (before the
+    /// model's setup_cycle()), recording its work in `rec`.
+    void
+    solve_predictor(ContactModel                    &predictor,
+                    const std::string               &predictor_entry,
+                    const std::vector<unsigned int> &cycles,
+                    CycleRecord                     &rec);
+
+    // output (driver_output.cc)
+    void
+    write_profile(const ContactModel &model, unsigned int cycle) const;
+    /// contact_points-NN[-sSS-iIII].csv ('Output/Contact points'); iterate
+    /// < 0: the converged iterate, else the iterate before that solve
+    void
+    write_contact_points(const ContactModel &model,
+                         unsigned int        cycle,
+                         const std::string  &stage_suffix = "",
+                         int                 iterate      = -1) const;
+    void
+    write_graphical_output(const ContactModel &model, unsigned int cycle);
+    void
+    print_cycle_results() const;
+    void
+    write_summary(const ContactModel &model) const;
+    void
+    write_tables() const;
+    void
+    print_timings() const;
+
+    const CommonParameters    &prm;
+    MPI_Comm                   comm;
+    dealii::ConditionalOStream pcout;
+    /// why the last solve stopped without converging (see NonlinearResult)
+    std::string                failure;
+    std::vector<CycleRecord>   records;
+    std::map<std::string, std::vector<std::pair<double, std::string>>>
+      pvd_entries;
+  };
+} // namespace NitscheContact
+
+#endif

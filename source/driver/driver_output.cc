@@ -1,0 +1,366 @@
+#include <deal.II/base/convergence_table.h>
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/utilities.h>
+
+#include <nitsche_contact/driver/driver.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <sstream>
+
+namespace NitscheContact
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// A JSON number: finite values with 10 significant digits, else null.
+    std::string
+    json_number(const double x)
+    {
+      if (!std::isfinite(x))
+        return "null";
+      std::ostringstream s;
+      s << std::setprecision(10) << x;
+      return s.str();
+    }
+
+    std::string
+    json_string(const std::string &x)
+    {
+      std::string out = "\"";
+      for (const char c : x)
+        {
+          if (c == '"' || c == '\\')
+            out += '\\';
+          out += c;
+        }
+      return out + "\"";
+    }
+
+    std::string
+    scheme_name(const NonlinearScheme s)
+    {
+      return s == NonlinearScheme::newton ? "newton" : "fixed point";
+    }
+  } // namespace
+
+  void
+  ContactDriver::write_graphical_output(const ContactModel &model,
+                                        const unsigned int  cycle)
+  {
+    for (const auto &series :
+         model.write_graphical_output(prm.output_directory, cycle))
+      pvd_entries[series.first].emplace_back(static_cast<double>(cycle),
+                                             series.second);
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      return;
+    for (const auto &series : pvd_entries)
+      {
+        std::ofstream pvd(prm.output_directory + "/" + series.first + ".pvd");
+        DataOutBase::write_pvd_record(pvd, series.second);
+      }
+  }
+
+  void
+  ContactDriver::print_cycle_results() const
+  {
+    const CycleResults &r = records.back().results;
+    pcout << "  contact area " << r.contact_area << ", contact force "
+          << r.contact_force << ", deflection in [" << r.min_deflection
+          << ", " << r.max_deflection << "]" << std::endl;
+    for (unsigned int p = 0; p < r.probes.size(); ++p)
+      pcout << "  deflection at (" << prm.probes[p] << ") = " << r.probes[p]
+            << std::endl;
+    for (const auto &e : r.errors)
+      {
+        pcout << "  error " << e.first << " = " << e.second << std::endl;
+        if (!std::isfinite(e.second))
+          pcout << "  warning: the error " << e.first
+                << " is not a finite number: 'Reference solution/Exact "
+                   "solution' is not finite where the model evaluates it"
+                << std::endl;
+      }
+  }
+
+  void
+  ContactDriver::print_timings() const
+  {
+    pcout << "\nWall-clock seconds per phase\n"
+          << "cycle      dofs   setup  assembly    solve  postproc  "
+             "output\n";
+    for (const auto &r : records)
+      pcout << std::setw(5) << r.cycle << std::setw(10) << r.n_dofs
+            << std::fixed << std::setprecision(3) << std::setw(8)
+            << r.times.setup << std::setw(10) << r.times.assembly
+            << std::setw(9) << r.times.solve << std::setw(10)
+            << r.times.postprocess << std::setw(8) << r.times.output
+            << std::endl;
+  }
+
+  void
+  ContactDriver::write_profile(const ContactModel &model,
+                               const unsigned int  cycle) const
+  {
+    std::vector<Point<2>> points(prm.profile_points);
+    for (unsigned int i = 0; i < prm.profile_points; ++i)
+      {
+        const double s = double(i) / (prm.profile_points - 1);
+        points[i]      = prm.profile_start + s * (prm.profile_end -
+                                             prm.profile_start);
+      }
+    const std::vector<double> w = model.deflection_at(points);
+    // the 2D field (collective: before the rank check below)
+    if (cycle + 1 == prm.n_cycles && prm.field_points > 0)
+      {
+        const unsigned int n = prm.field_points;
+        std::vector<Point<2>> grid;
+        for (unsigned int j = 0; j < n; ++j)
+          for (unsigned int i = 0; i < n; ++i)
+            grid.emplace_back(prm.length_x * i / (n - 1),
+                              prm.length_y * j / (n - 1));
+        const std::vector<double> wg = model.deflection_at(grid);
+        if (Utilities::MPI::this_mpi_process(comm) != 0)
+          return;
+        std::ofstream g(prm.output_directory + "/field.csv");
+        g << "x,y,deflection\n" << std::setprecision(10);
+        for (unsigned int k = 0; k < grid.size(); ++k)
+          g << grid[k][0] << ',' << grid[k][1] << ',' << wg[k] << '\n';
+      }
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      return;
+    const double  length = prm.profile_start.distance(prm.profile_end);
+    std::ofstream f(prm.output_directory + "/profile-" +
+                    Utilities::int_to_string(cycle, 2) + ".csv");
+    f << "s,x,y,deflection\n" << std::setprecision(10);
+    for (unsigned int i = 0; i < points.size(); ++i)
+      f << length * i / (points.size() - 1) << ',' << points[i][0] << ','
+        << points[i][1] << ',' << w[i] << '\n';
+    f.close();
+    if (cycle + 1 == prm.n_cycles)
+      std::filesystem::copy_file(
+        prm.output_directory + "/profile-" + Utilities::int_to_string(cycle, 2) +
+          ".csv",
+        prm.output_directory + "/profile.csv",
+        std::filesystem::copy_options::overwrite_existing);
+  }
+
+  void
+  ContactDriver::write_contact_points(const ContactModel &model,
+                                      const unsigned int  cycle,
+                                      const std::string  &stage_suffix,
+                                      const int           iterate) const
+  {
+    const std::vector<ContactPointRecord> points = model.contact_points();
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      return;
+    // iterate < 0: the cycle's converged iterate
+    std::ofstream f(prm.output_directory + "/contact_points-" +
+                    Utilities::int_to_string(cycle, 2) +
+                    (iterate < 0 ? std::string() :
+                                   stage_suffix + "-i" + Utilities::int_to_string(iterate, 3)) +
+                    ".csv");
+    f << "x,y,cell_x,cell_y,weight,status,s_n,sigma_n,gap,pressure,"
+         "slip_x,slip_y,slip_z,q_x,q_y,q_z,tau,lambda_t_x,lambda_t_y,lambda_t_z\n"
+      << std::setprecision(12);
+    for (const ContactPointRecord &p : points)
+      {
+        // where no obstacle lies below the point (outside a sphere's
+        // shadow), gap and s_n are nan, not the internal sentinel
+        const bool   below = ObstacleSurface::has_obstacle(p.gap);
+        const double nan   = std::numeric_limits<double>::quiet_NaN();
+        f << p.x << ',' << p.y << ',' << p.cell_x << ',' << p.cell_y << ','
+          << p.weight << ',' << p.status << ',' << (below ? p.s_n : nan)
+          << ',' << p.sigma_n << ',' << (below ? p.gap : nan) << ','
+          << p.pressure;
+        for (const Tensor<1, 3> *v : {&p.slip, &p.q})
+          for (unsigned int d = 0; d < 3; ++d)
+            f << ',' << (*v)[d];
+        f << ',' << p.tau;
+        for (unsigned int d = 0; d < 3; ++d)
+          f << ',' << p.lambda_t[d];
+        f << '\n';
+      }
+  }
+
+  void
+  ContactDriver::write_tables() const
+  {
+    ConvergenceTable table;
+    std::vector<std::string> error_names;
+    for (const auto &r : records)
+      {
+        table.add_value("cycle", r.cycle);
+        table.add_value("dofs", static_cast<unsigned long>(r.n_dofs));
+        table.add_value("h", r.h);
+        table.add_value("its", r.iterations);
+        table.add_value("area", r.results.contact_area);
+        table.add_value("force", r.results.contact_force);
+        table.add_value("min_w", r.results.min_deflection);
+        table.add_value("max_w", r.results.max_deflection);
+        for (unsigned int p = 0; p < r.results.probes.size(); ++p)
+          table.add_value("w@p" + std::to_string(p), r.results.probes[p]);
+        for (const auto &e : r.results.errors)
+          {
+            table.add_value(e.first, e.second);
+            if (std::find(error_names.begin(), error_names.end(), e.first) ==
+                error_names.end())
+              error_names.push_back(e.first);
+          }
+      }
+    for (const std::string col : {"h", "area", "force", "min_w", "max_w"})
+      {
+        table.set_precision(col, 4);
+        table.set_scientific(col, true);
+      }
+    if (!records.empty())
+      for (unsigned int p = 0; p < records.back().results.probes.size(); ++p)
+        {
+          table.set_precision("w@p" + std::to_string(p), 6);
+          table.set_scientific("w@p" + std::to_string(p), true);
+        }
+    for (const auto &e : error_names)
+      {
+        table.set_precision(e, 3);
+        table.set_scientific(e, true);
+        table.evaluate_convergence_rates(e,
+                                         ConvergenceTable::reduction_rate_log2);
+      }
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      return;
+    std::cout << std::endl;
+    table.write_text(std::cout);
+    std::ofstream txt(prm.output_directory + "/convergence.txt");
+    table.write_text(txt);
+    std::ofstream tex(prm.output_directory + "/convergence.tex");
+    table.write_tex(tex);
+
+    // The same data as CSV (full precision), with the rates of the errors.
+    std::ofstream csv(prm.output_directory + "/convergence.csv");
+    csv << "cycle,dofs,h,iterations,contact_area,contact_force,"
+           "min_deflection,max_deflection";
+    if (!records.empty())
+      for (unsigned int p = 0; p < records.back().results.probes.size(); ++p)
+        csv << ",probe" << p;
+    for (const auto &e : error_names)
+      csv << ",error_" << e << ",rate_" << e;
+    csv << '\n' << std::setprecision(10);
+    for (unsigned int i = 0; i < records.size(); ++i)
+      {
+        const auto &r = records[i];
+        csv << r.cycle << ',' << r.n_dofs << ',' << r.h << ','
+            << r.iterations << ',' << r.results.contact_area << ','
+            << r.results.contact_force << ',' << r.results.min_deflection
+            << ',' << r.results.max_deflection;
+        for (const double p : r.results.probes)
+          csv << ',' << p;
+        for (const auto &name : error_names)
+          {
+            double e = std::numeric_limits<double>::quiet_NaN(), prev = e;
+            for (const auto &x : r.results.errors)
+              if (x.first == name)
+                e = x.second;
+            if (i > 0)
+              for (const auto &x : records[i - 1].results.errors)
+                if (x.first == name)
+                  prev = x.second;
+            csv << ',' << e << ',';
+            if (i > 0 && prev > 0 && e > 0)
+              csv << std::log2(prev / e);
+          }
+        csv << '\n';
+      }
+  }
+
+  void
+  ContactDriver::write_summary(const ContactModel &model) const
+  {
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      return;
+    std::ofstream f(prm.output_directory + "/summary.json");
+    const ModelDescription desc = model.describe();
+    f << "{\n  \"model\": " << json_string(desc.name) << ",\n";
+    f << "  \"parameters\": {\n";
+    for (const auto &kv : desc.entries)
+      f << "    " << json_string(kv.first) << ": " << json_string(kv.second)
+        << ",\n";
+    f << "    \"nonlinear scheme\": " << json_string(scheme_name(prm.nonlinear.scheme))
+      << ",\n    \"mpi processes\": "
+      << Utilities::MPI::n_mpi_processes(comm) << "\n  },\n";
+    f << "  \"probe_points\": [";
+    for (unsigned int p = 0; p < prm.probes.size(); ++p)
+      f << (p ? ", " : "") << "[" << json_number(prm.probes[p][0]) << ", "
+        << json_number(prm.probes[p][1]) << "]";
+    f << "],\n  \"cycles\": [\n";
+    for (unsigned int i = 0; i < records.size(); ++i)
+      {
+        const auto &r = records[i];
+        f << "    {\n      \"cycle\": " << r.cycle
+          << ",\n      \"n_dofs\": " << r.n_dofs
+          << ",\n      \"h\": " << json_number(r.h)
+          << ",\n      \"nonlinear_iterations\": " << r.iterations
+          << ",\n      \"linear_iterations\": " << r.linear_iterations;
+        if (r.predictor_dofs > 0)
+          f << ",\n      \"predictor_dofs\": " << r.predictor_dofs
+            << ",\n      \"predictor_iterations\": "
+            << r.predictor_iterations
+            << ",\n      \"predictor_seconds\": "
+            << json_number(r.predictor_seconds);
+        f
+          << ",\n      \"converged\": " << (r.converged ? "true" : "false")
+          << ",\n      \"contact_points\": " << r.counts.n_points
+          << ",\n      \"active_points\": " << r.counts.n_active
+          << ",\n      \"stick_points\": " << r.counts.n_stick
+          << ",\n      \"slip_points\": " << r.counts.n_slip
+          << ",\n      \"contact_area\": "
+          << json_number(r.results.contact_area)
+          << ",\n      \"contact_force\": "
+          << json_number(r.results.contact_force)
+          << ",\n      \"min_deflection\": "
+          << json_number(r.results.min_deflection)
+          << ",\n      \"max_deflection\": "
+          << json_number(r.results.max_deflection) << ",\n      \"probes\": ";
+        if (r.results.probes.size() != prm.probes.size())
+          f << "null"; // not postprocessed
+        else
+          {
+            f << "[";
+            for (unsigned int p = 0; p < r.results.probes.size(); ++p)
+              f << (p ? ", " : "") << json_number(r.results.probes[p]);
+            f << "]";
+          }
+        f << ",\n      \"errors\": {";
+        for (unsigned int e = 0; e < r.results.errors.size(); ++e)
+          f << (e ? ", " : "") << json_string(r.results.errors[e].first)
+            << ": " << json_number(r.results.errors[e].second);
+        f << "},\n      \"rates\": {";
+        bool first = true;
+        if (i > 0)
+          for (const auto &e : r.results.errors)
+            for (const auto &ep : records[i - 1].results.errors)
+              if (ep.first == e.first && e.second > 0 && ep.second > 0)
+                {
+                  f << (first ? "" : ", ") << json_string(e.first) << ": "
+                    << json_number(std::log2(ep.second / e.second));
+                  first = false;
+                }
+        f << "},\n      \"extra\": {";
+        for (unsigned int e = 0; e < r.results.extra.size(); ++e)
+          f << (e ? ", " : "") << json_string(r.results.extra[e].first)
+            << ": " << json_number(r.results.extra[e].second);
+        f << "},\n      \"wall_times\": {\"setup\": "
+          << json_number(r.times.setup)
+          << ", \"assembly\": " << json_number(r.times.assembly)
+          << ", \"solve\": " << json_number(r.times.solve)
+          << ", \"postprocess\": " << json_number(r.times.postprocess)
+          << ", \"output\": " << json_number(r.times.output) << "}\n    }"
+          << (i + 1 < records.size() ? "," : "") << "\n";
+      }
+    f << "  ]\n}\n";
+  }
+} // namespace NitscheContact
