@@ -7,6 +7,7 @@
 
 #include <nitsche_contact/driver/driver.h>
 #include <nitsche_contact/model_registry.h>
+#include <nitsche_contact/moved_entries.h>
 #include <nitsche_contact/parameters.h>
 
 #include <filesystem>
@@ -167,6 +168,7 @@ main(int argc, char *argv[])
       if (!std::filesystem::is_regular_file(file))
         throw InputError("the parameter file '" + file +
                          "' does not exist or is not a regular file");
+      check_moved_entries(file);
       try
         {
           prm.parse_input(file, "", false, true);

@@ -25,7 +25,7 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
 
-#include <nitsche_contact/models/mindlin.h>
+#include <nitsche_contact/models/mindlin/mindlin_model.h>
 
 #include <cmath>
 #include <fstream>

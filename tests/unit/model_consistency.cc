@@ -36,9 +36,9 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <nitsche_contact/model_registry.h>
-#include <nitsche_contact/models/elasticity.h>
-#include <nitsche_contact/models/kirchhoff.h>
-#include <nitsche_contact/models/mindlin.h>
+#include <nitsche_contact/models/elasticity/elasticity_model.h>
+#include <nitsche_contact/models/kirchhoff/kirchhoff_model.h>
+#include <nitsche_contact/models/mindlin/mindlin_model.h>
 #include <nitsche_contact/parameters.h>
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 """The sparse direct solver's kept factorisation
-(include/nitsche_contact/reused_factorization.h) against factorising every
+(include/nitsche_contact/solvers/reused_factorization.h) against factorising every
 Newton matrix ('Nonlinear solver/Reuse factorization = false'), the second
 linear-algebra path of the program:
  - without friction a Newton matrix whose contact status did not change is

@@ -39,7 +39,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <nitsche_contact/reused_factorization.h>
+#include <nitsche_contact/solvers/reused_factorization.h>
 
 #include <cstdint>
 #include <vector>

@@ -17,7 +17,7 @@
 
 #include <nitsche_contact/model_registry.h>
 #include <nitsche_contact/nonlinear/stopping_rules.h>
-#include <nitsche_contact/models/mindlin.h>
+#include <nitsche_contact/models/mindlin/mindlin_model.h>
 
 #include <cmath>
 #include <limits>

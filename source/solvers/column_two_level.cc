@@ -3,7 +3,7 @@
 #include <deal.II/fe/fe.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
-#include <nitsche_contact/column_two_level.h>
+#include <nitsche_contact/solvers/column_two_level.h>
 #include <nitsche_contact/parameters.h>
 
 #include <Epetra_CrsMatrix.h>

@@ -14,7 +14,7 @@
 
 #include <nitsche_contact/model_registry.h>
 #include <nitsche_contact/nonlinear/stopping_rules.h>
-#include <nitsche_contact/models/kirchhoff.h>
+#include <nitsche_contact/models/kirchhoff/kirchhoff_model.h>
 
 #include <algorithm>
 #include <array>

@@ -26,8 +26,8 @@
 
 #include <nitsche_contact/model.h>
 #include <nitsche_contact/parameters.h>
-#include <nitsche_contact/models/hermite_multigrid.h>
-#include <nitsche_contact/reused_factorization.h>
+#include <nitsche_contact/solvers/hermite_multigrid.h>
+#include <nitsche_contact/solvers/reused_factorization.h>
 
 #include <array>
 #include <memory>

@@ -9,7 +9,7 @@
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/sparse_direct.h>
 
-#include <nitsche_contact/models/hermite_multigrid.h>
+#include <nitsche_contact/solvers/hermite_multigrid.h>
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 #include <deal.II/lac/solver_gmres.h>
 
 #include <nitsche_contact/parameters.h>
-#include <nitsche_contact/reused_factorization.h>
+#include <nitsche_contact/solvers/reused_factorization.h>
 
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>

@@ -15,11 +15,11 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <nitsche_contact/column_two_level.h>
+#include <nitsche_contact/solvers/column_two_level.h>
 #include <nitsche_contact/model.h>
-#include <nitsche_contact/models/mindlin.h>
+#include <nitsche_contact/models/mindlin/mindlin_model.h>
 #include <nitsche_contact/parameters.h>
-#include <nitsche_contact/reused_factorization.h>
+#include <nitsche_contact/solvers/reused_factorization.h>
 
 #include <memory>
 

@@ -22,7 +22,7 @@
 
 #include <nitsche_contact/model_registry.h>
 #include <nitsche_contact/nonlinear/stopping_rules.h>
-#include <nitsche_contact/models/elasticity.h>
+#include <nitsche_contact/models/elasticity/elasticity_model.h>
 
 #include <array>
 #include <cmath>
