@@ -1,6 +1,8 @@
-// nitsche-contact: frictional contact of elastic plates (3D elasticity,
-// Reissner-Mindlin, Kirchhoff-Love) against rigid obstacles with Nitsche's
-// method. See README.md and doc/.
+// nitsche-contact: frictional contact of elastic plates against rigid
+// obstacles with Nitsche's method. main() reads the command line and the
+// parameter file, builds the selected model and hands it to the driver;
+// every failure becomes one message and an exit status. See README.md and
+// doc/design.md.
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
@@ -10,17 +12,112 @@
 #include <nitsche_contact/moved_entries.h>
 #include <nitsche_contact/parameters.h>
 
+#include <cstdlib>
 #include <filesystem>
-#include <new>
-#include <sstream>
 #include <fstream>
 #include <iostream>
-#include <cstdlib>
+#include <new>
+#include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
 namespace
 {
+  using namespace NitscheContact;
+
+  /// The exit statuses.
+  enum ExitStatus
+  {
+    success         = 0,
+    invalid_input   = 1,
+    not_converged   = 2,
+    internal_error  = 3
+  };
+
+  void
+  print_usage(std::ostream &out)
+  {
+    out << "Usage: nitsche-contact [--help] [--print-parameters] FILE.prm\n"
+           "\n"
+           "Solves the contact problem described by the deal.II parameter "
+           "file\nFILE.prm with the model selected by 'set Model' and "
+           "writes summary.json,\nconvergence tables, a deflection profile "
+           "and VTU/PVD files to\n'Output/Directory'. Models:\n";
+    for (const auto &m : ModelRegistry::entries())
+      out << "  " << m.name << std::string(m.name.size() < 12 ? 13 - m.name.size() : 1, ' ')
+          << m.description << "\n";
+    out << "\n"
+           "  --help               print this message and exit\n"
+           "  --print-parameters   print every parameter with its "
+           "documentation\n"
+           "                       and default value (a complete .prm) and "
+           "exit\n"
+           "\n"
+           "Run in parallel with 'mpirun -np N nitsche-contact FILE.prm'.\n"
+           "Exit status: 0 success, 1 invalid input, 2 nonlinear solver did "
+           "not\nconverge, 3 out of memory or internal error.\n";
+  }
+
+  /// The parameter file named on the command line, or the exit status of
+  /// a command line that asks for no run (--help, --print-parameters) or
+  /// is malformed.
+  struct CommandLine
+  {
+    std::string               file;
+    std::optional<ExitStatus> exit;
+  };
+
+  CommandLine
+  parse_command_line(const int                       argc,
+                     char                          **argv,
+                     const bool                      root,
+                     const dealii::ParameterHandler &prm)
+  {
+    CommandLine cl;
+    const auto  fail = [&](const std::string &message, const bool usage) {
+      if (root)
+        {
+          std::cerr << "nitsche-contact: error: " << message << "\n";
+          if (usage)
+            {
+              std::cerr << "\n";
+              print_usage(std::cerr);
+            }
+        }
+      cl.exit = invalid_input;
+      return cl;
+    };
+    for (int i = 1; i < argc; ++i)
+      {
+        const std::string a = argv[i];
+        if (a == "--help" || a == "-h")
+          {
+            if (root)
+              print_usage(std::cout);
+            cl.exit = success;
+            return cl;
+          }
+        if (a == "--print-parameters")
+          {
+            if (root)
+              prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
+            cl.exit = success;
+            return cl;
+          }
+        if (!a.empty() && a[0] == '-')
+          return fail("unknown option '" + a + "'", true);
+        if (!cl.file.empty())
+          return fail("more than one parameter file given ('" + cl.file +
+                        "' and '" + a + "')",
+                      false);
+        cl.file = a;
+      }
+    if (cl.file.empty())
+      return fail("no parameter file given", true);
+    return cl;
+  }
+
   /// The subsection path ("A/B") open at line `line` (1-based) of a .prm
   /// file, for error messages: deal.II only says "the current subsection".
   std::string
@@ -43,9 +140,154 @@ namespace
     return path;
   }
 
-  // The out-of-memory message; `summary` names an existing summary.json.
+  /// The text between `before` and `after` in `text` (trimmed), or "".
   std::string
-  out_of_memory_message(const std::string &what, const std::string &where,
+  between(const std::string &text,
+          const std::string &before,
+          const std::string &after)
+  {
+    const auto a = text.find(before);
+    if (a == std::string::npos)
+      return "";
+    const auto b = text.find(after, a + before.size());
+    if (b == std::string::npos)
+      return "";
+    return dealii::Utilities::trim(
+      text.substr(a + before.size(), b - a - before.size()));
+  }
+
+  /// "a number >= 0", "an integer in [1, 12]" from deal.II's description
+  /// "[Double 0...MAX_DOUBLE (inclusive)]" or "[Integer range 1...12
+  /// (inclusive)]" of a pattern.
+  std::string
+  range_description(const std::string &pattern)
+  {
+    const bool        integer = pattern.rfind("[Integer", 0) == 0;
+    const std::string kind    = integer ? "an integer" : "a number";
+    const auto        dots    = pattern.find("...");
+    if (dots == std::string::npos)
+      return kind;
+    const auto        space = pattern.rfind(' ', dots);
+    const std::string low   = pattern.substr(space + 1, dots - space - 1);
+    const std::string high =
+      pattern.substr(dots + 3, pattern.find(' ', dots) - dots - 3);
+    const bool has_low  = low != "-MAX_DOUBLE" && low != "-2147483648";
+    const bool has_high = high != "MAX_DOUBLE" && high != "2147483647";
+    if (has_low && has_high)
+      return kind + " in [" + low + ", " + high + "]";
+    if (has_low)
+      return kind + " >= " + low;
+    if (has_high)
+      return kind + " <= " + high;
+    return kind;
+  }
+
+  /// The message for deal.II's report of a value that does not match its
+  /// entry's pattern, in the program's one format; "" for other reports.
+  std::string
+  pattern_mismatch_message(const std::string &text,
+                           const std::string &file,
+                           const int          line)
+  {
+    const std::string value   = between(text, "The entry value", "for the entry named");
+    const std::string entry   = between(text, "for the entry named", "does not match");
+    const auto        p       = text.find("does not match the given pattern:");
+    if (entry.empty() || p == std::string::npos)
+      return "";
+    const std::string pattern = dealii::Utilities::trim(text.substr(p + 33));
+    std::string       allowed = "allowed is " + pattern;
+    if (pattern.rfind("[Selection ", 0) == 0)
+      {
+        allowed = "allowed are ";
+        const auto names = dealii::Utilities::split_string_list(
+          pattern.substr(11, pattern.size() - 12), '|');
+        for (unsigned int i = 0; i < names.size(); ++i)
+          allowed += (i ? ", '" : "'") + names[i] + "'";
+      }
+    else if (pattern.rfind("[Bool", 0) == 0)
+      allowed = "allowed are 'true' and 'false'";
+    else if (pattern.rfind("[Double", 0) == 0 ||
+             pattern.rfind("[Integer", 0) == 0)
+      allowed = "allowed is " + range_description(pattern);
+    const std::string sub = subsection_at_line(file, line);
+    return "invalid value '" + value + "' for parameter '" +
+           (sub.empty() ? entry : sub + "/" + entry) + "' (line " +
+           std::to_string(line) + " of '" + file + "'): " + allowed;
+  }
+
+  /// Read the parameter file into `prm`; every problem is an InputError.
+  void
+  read_parameter_file(dealii::ParameterHandler &prm, const std::string &file)
+  {
+    if (!std::filesystem::is_regular_file(file))
+      throw InputError("the parameter file '" + file +
+                       "' does not exist or is not a regular file");
+    check_moved_entries(file);
+    try
+      {
+        prm.parse_input(file, "", false, true);
+      }
+    catch (const dealii::ExceptionBase &e)
+      {
+        // deal.II's message names the file, line, entry and pattern; keep
+        // it, without the stack trace, and name the subsection
+        std::ostringstream msg;
+        e.print_info(msg);
+        std::string text = msg.str();
+        while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+          text.pop_back();
+        const auto pos  = text.find("Line <");
+        const int  line = pos != std::string::npos ?
+                            std::atoi(text.c_str() + pos + 6) :
+                            0;
+        const std::string mismatch =
+          line > 0 ? pattern_mismatch_message(text, file, line) : "";
+        if (!mismatch.empty())
+          throw InputError(mismatch);
+        std::string where;
+        if (line > 0)
+          {
+            const std::string sub = subsection_at_line(file, line);
+            where = "\n    (in subsection '" +
+                    (sub.empty() ? std::string("top level") : sub) +
+                    "'; 'nitsche-contact --print-parameters' lists every "
+                    "entry with its allowed values)";
+          }
+        throw InputError("cannot read '" + file + "':" +
+                         (text.find('\n') != std::string::npos ? "\n" : " ") +
+                         text + where);
+      }
+    catch (const std::exception &e)
+      {
+        // the XML and JSON readers (chosen by the file's extension) throw
+        // boost's parser errors
+        throw InputError("cannot read '" + file + "': " + e.what());
+      }
+  }
+
+  /// The outermost directory of `path` that does not exist yet (empty if
+  /// all exist or the check fails): what a run creates, and removes again
+  /// when it fails before a cycle finished.
+  std::filesystem::path
+  outermost_new_directory(const std::string &path)
+  {
+    std::error_code       status_error;
+    std::filesystem::path created, p = path;
+    while (!p.empty() && !std::filesystem::exists(p, status_error) &&
+           !status_error)
+      {
+        created = p;
+        if (p.parent_path() == p)
+          break;
+        p = p.parent_path();
+      }
+    return status_error ? std::filesystem::path() : created;
+  }
+
+  /// The out-of-memory message; `summary` names an existing summary.json.
+  std::string
+  out_of_memory_message(const std::string &what,
+                        const std::string &where,
                         const std::string &summary)
   {
     std::error_code ignored;
@@ -53,294 +295,145 @@ namespace
            "): the mesh and its linear solver need more memory than is "
            "available. Each cycle multiplies the number of DoFs by about 4 "
            "(8 when refining through the thickness): lower 'Geometry/"
-           "Subdivisions', 'Initial refinement' or 'Number of cycles', use "
-           "'Linear solver = multigrid' for the frictionless plates, or run "
+           "Subdivisions', 'Initial refinement' or 'Number of cycles', use a "
+           "multigrid linear solver for the frictionless plates, or run "
            "the 3D model on more MPI processes." +
            (!summary.empty() && std::filesystem::exists(summary, ignored) ?
               " The cycles that finished are in " + summary + "." :
               std::string());
   }
 
-  // After a failure on some MPI ranks only (out of memory, an internal
-  // error), the other ranks may wait in a collective operation for ever:
-  // end the whole job.
+  /// Read the parameters, build the model and run the driver. `summary`
+  /// receives the path of summary.json once the output directory is known.
   void
-  abort_other_ranks(const unsigned int n_ranks, const int status)
+  run(dealii::ParameterHandler &prm,
+      const std::string        &file,
+      std::string              &summary)
   {
-    if (n_ranks > 1)
-      MPI_Abort(MPI_COMM_WORLD, status);
+    read_parameter_file(prm, file);
+    CommonParameters common;
+    common.parse(prm);
+    auto model = ModelRegistry::create(common, prm, MPI_COMM_WORLD);
+    // Some input is only found invalid when the mesh exists: a directory
+    // this run created then goes again, unless a cycle finished (the
+    // driver wrote its summary there).
+    const std::filesystem::path created =
+      outermost_new_directory(common.output_directory);
+    summary = common.output_directory + "/summary.json";
+    ContactDriver driver(common, MPI_COMM_WORLD);
+    const bool root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    if (root)
+      {
+        std::ofstream used(common.output_directory + "/used_parameters.prm");
+        prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
+      }
+    try
+      {
+        driver.run(*model);
+      }
+    catch (const ConvergenceFailure &)
+      {
+        throw;
+      }
+    catch (...)
+      {
+        std::error_code ignored;
+        if (root && !created.empty() &&
+            !std::filesystem::exists(summary, ignored))
+          std::filesystem::remove_all(created, ignored);
+        throw;
+      }
   }
 
-  void
-  print_usage(std::ostream &out)
+  /// The message and exit status of the exception being handled. Failures
+  /// that may hit one MPI rank only (out of memory, an internal error) end
+  /// the whole job, since the other ranks may wait in a collective
+  /// operation for ever.
+  int
+  report_exception(const std::string &summary)
   {
-    out
-      << "Usage: nitsche-contact [--help] [--print-parameters] FILE.prm\n"
-         "\n"
-         "Solves the contact problem described by the deal.II parameter file\n"
-         "FILE.prm with the model selected by 'set Model' and writes\n"
-         "summary.json, convergence tables, a deflection profile and VTU/PVD\n"
-         "files to 'Output/Directory'. Models:\n";
-    for (const auto &m : NitscheContact::ModelRegistry::entries())
-      out << "  " << m.name << std::string(m.name.size() < 20 ? 21 - m.name.size() : 1, ' ')
-          << m.description << "\n";
-    out << "\n"
-         "  --help               print this message and exit\n"
-         "  --print-parameters   print every parameter with its documentation\n"
-         "                       and default value (a complete .prm) and exit\n"
-         "\n"
-         "Run in parallel with 'mpirun -np N nitsche-contact FILE.prm'.\n"
-         "Exit status: 0 success, 1 invalid input, 2 nonlinear solver did not\n"
-         "converge, 3 out of memory or internal error.\n";
+    const unsigned int rank =
+      dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+    const unsigned int n_ranks =
+      dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    const bool root        = rank == 0;
+    const auto end_the_job = [&](const int status) {
+      if (n_ranks > 1)
+        MPI_Abort(MPI_COMM_WORLD, status);
+      return status;
+    };
+    const std::string on_rank =
+      n_ranks > 1 ? " on rank " + std::to_string(rank) : std::string();
+    try
+      {
+        throw;
+      }
+    catch (const InputError &e)
+      {
+        if (root)
+          std::cerr << "nitsche-contact: error: " << e.what() << std::endl;
+        return invalid_input;
+      }
+    catch (const ConvergenceFailure &e)
+      {
+        if (root)
+          std::cerr << "nitsche-contact: error: " << e.what() << std::endl;
+        return not_converged;
+      }
+    catch (const OutOfMemory &e)
+      {
+        // (collective: MUMPS reports it on every rank)
+        if (root)
+          std::cerr << out_of_memory_message(e.what(), "", summary)
+                    << std::endl;
+        return internal_error;
+      }
+    catch (const std::bad_alloc &e)
+      {
+        std::cerr << out_of_memory_message(e.what(), on_rank, summary)
+                  << std::endl;
+        return end_the_job(internal_error);
+      }
+    catch (const std::exception &e)
+      {
+        std::cerr << "nitsche-contact: internal error" << on_rank << ": "
+                  << e.what() << std::endl;
+        return end_the_job(internal_error);
+      }
+    catch (...)
+      {
+        std::cerr << "nitsche-contact: internal error" << on_rank
+                  << ": an exception of unknown type" << std::endl;
+        return end_the_job(internal_error);
+      }
   }
 } // namespace
 
 int
 main(int argc, char *argv[])
 {
-  using namespace NitscheContact;
-  // Threads: deal.II shares the node's cores among the MPI processes (one
-  // process on the 2-core machine: 2 threads for the threaded deal.II
-  // vector and matrix operations of the Kirchhoff multigrid V-cycle; two
-  // processes: one thread each). DEAL_II_NUM_THREADS caps it.
+  // Threads: deal.II shares the node's cores among the MPI processes;
+  // DEAL_II_NUM_THREADS caps them.
   dealii::Utilities::MPI::MPI_InitFinalize mpi(
     argc, argv, dealii::numbers::invalid_unsigned_int);
-  const unsigned int rank =
-    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-  const bool root = rank == 0;
-  const unsigned int n_ranks =
-    dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+  const bool root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
 
   dealii::ParameterHandler prm;
-  CommonParameters::declare(prm);
-  ModelRegistry::declare_parameters(prm);
+  NitscheContact::CommonParameters::declare(prm);
+  NitscheContact::ModelRegistry::declare_parameters(prm);
 
-  std::string file;
-  for (int i = 1; i < argc; ++i)
-    {
-      const std::string a = argv[i];
-      if (a == "--help" || a == "-h")
-        {
-          if (root)
-            print_usage(std::cout);
-          return 0;
-        }
-      if (a == "--print-parameters")
-        {
-          if (root)
-            prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
-          return 0;
-        }
-      if (!a.empty() && a[0] == '-')
-        {
-          if (root)
-            {
-              std::cerr << "nitsche-contact: error: unknown option '" << a
-                        << "'\n\n";
-              print_usage(std::cerr);
-            }
-          return 1;
-        }
-      if (!file.empty())
-        {
-          if (root)
-            std::cerr << "nitsche-contact: error: more than one parameter "
-                         "file given ('"
-                      << file << "' and '" << a << "')\n";
-          return 1;
-        }
-      file = a;
-    }
-  if (file.empty())
-    {
-      if (root)
-        {
-          std::cerr << "nitsche-contact: error: no parameter file given\n\n";
-          print_usage(std::cerr);
-        }
-      return 1;
-    }
+  const CommandLine command_line = parse_command_line(argc, argv, root, prm);
+  if (command_line.exit)
+    return *command_line.exit;
 
-  // summary.json of the run, once the output directory is known
   std::string summary;
   try
     {
-      if (!std::filesystem::is_regular_file(file))
-        throw InputError("the parameter file '" + file +
-                         "' does not exist or is not a regular file");
-      check_moved_entries(file);
-      try
-        {
-          prm.parse_input(file, "", false, true);
-        }
-      catch (const dealii::ExceptionBase &e)
-        {
-          // deal.II's message names the file, line, entry and pattern;
-          // keep it, without the stack trace.
-          std::ostringstream msg;
-          e.print_info(msg);
-          std::string text = msg.str();
-          while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
-            text.pop_back();
-          // Name the subsection of the offending line, and where to look.
-          std::string where;
-          const auto  pos = text.find("Line <");
-          if (pos != std::string::npos)
-            {
-              const int         line = std::atoi(text.c_str() + pos + 6);
-              const std::string sub  = subsection_at_line(file, line);
-              where = "\n    (in subsection '" +
-                      (sub.empty() ? std::string("top level") : sub) +
-                      "'; 'nitsche-contact --print-parameters' lists every "
-                      "entry with its allowed values)";
-            }
-          throw InputError("cannot read '" + file + "':" +
-                           (text.find('\n') != std::string::npos ? "\n" : " ") +
-                           text + where);
-        }
-      catch (const std::exception &e)
-        {
-          // the XML and JSON readers (chosen by the file's extension)
-          // throw boost's parser errors
-          throw InputError("cannot read '" + file + "': " + e.what());
-        }
-
-      CommonParameters common;
-      common.parse(prm);
-      auto model = ModelRegistry::create(common, prm, MPI_COMM_WORLD);
-      // Some input is only found invalid when the mesh exists (a refinement
-      // box without cells, magnitudes that overflow the cell matrices),
-      // after the driver made the output directory: a directory this run
-      // created then goes again, so that no partial output remains.
-      // The outermost directory of the path that does not exist yet (if
-      // even that check fails, nothing counts as created: the driver then
-      // reports the directory, and nothing is removed). A failure on a
-      // later cycle keeps the directory: the driver wrote the earlier
-      // cycles' summary there.
-      std::filesystem::path created;
-      {
-        std::error_code       status_error;
-        std::filesystem::path p = common.output_directory;
-        while (!p.empty() && !std::filesystem::exists(p, status_error) &&
-               !status_error)
-          {
-            created = p;
-            if (p.parent_path() == p)
-              break;
-            p = p.parent_path();
-          }
-        if (status_error)
-          created.clear();
-      }
-      summary = common.output_directory + "/summary.json";
-      ContactDriver driver(common, MPI_COMM_WORLD);
-      // the parameters first (the driver made the directory), so that the
-      // directory of a run that fails later says what was run
-      if (root)
-        {
-          std::ofstream used(common.output_directory + "/used_parameters.prm");
-          prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
-        }
-      // invalid input found on the mesh, or out of memory: remove what
-      // this run created unless a cycle finished (summary.json)
-      const auto remove_created = [&]() {
-        std::error_code ignored;
-        if (root && !created.empty() &&
-            !std::filesystem::exists(summary, ignored))
-          std::filesystem::remove_all(created, ignored);
-      };
-      try
-        {
-          driver.run(*model);
-        }
-      catch (const InputError &)
-        {
-          remove_created();
-          throw;
-        }
-      catch (const OutOfMemory &)
-        {
-          // (collective: MUMPS reports it on every rank)
-          remove_created();
-          throw;
-        }
-      catch (const ConvergenceFailure &)
-        {
-          throw;
-        }
-      // The failures below may hit one MPI rank only while the others wait
-      // in a collective operation, and the model's destructor (MUMPS) would
-      // wait for them too: end the whole job from here.
-      catch (const std::bad_alloc &e)
-        {
-          remove_created();
-          if (n_ranks > 1)
-            {
-              std::cerr << out_of_memory_message(
-                             e.what(), " on rank " + std::to_string(rank),
-                             summary)
-                        << std::endl;
-              MPI_Abort(MPI_COMM_WORLD, 3);
-            }
-          throw;
-        }
-      catch (const std::exception &e)
-        {
-          if (n_ranks > 1)
-            {
-              std::cerr << "nitsche-contact: internal error on rank " << rank
-                        << ": " << e.what() << std::endl;
-              MPI_Abort(MPI_COMM_WORLD, 3);
-            }
-          throw;
-        }
-    }
-  catch (const InputError &e)
-    {
-      if (root)
-        std::cerr << "nitsche-contact: error: " << e.what() << std::endl;
-      return 1;
-    }
-  catch (const ConvergenceFailure &e)
-    {
-      if (root)
-        std::cerr << "nitsche-contact: error: " << e.what() << std::endl;
-      return 2;
-    }
-  catch (const OutOfMemory &e)
-    {
-      // collective (every rank has it)
-      if (root)
-        std::cerr << out_of_memory_message(e.what(), "", summary) << std::endl;
-      return 3;
-    }
-  // The failures below may hit one MPI rank only (before the driver runs),
-  // while the others wait in a collective operation: end the whole job.
-  catch (const std::bad_alloc &e)
-    {
-      std::cerr << out_of_memory_message(
-                     e.what(),
-                     n_ranks > 1 ? " on rank " + std::to_string(rank) :
-                                   std::string(),
-                     summary)
-                << std::endl;
-      abort_other_ranks(n_ranks, 3);
-      return 3;
-    }
-  catch (const std::exception &e)
-    {
-      std::cerr << "nitsche-contact: internal error: " << e.what()
-                << std::endl;
-      abort_other_ranks(n_ranks, 3);
-      return 3;
+      run(prm, command_line.file, summary);
     }
   catch (...)
     {
-      std::cerr << "nitsche-contact: internal error: an exception of unknown "
-                   "type"
-                << std::endl;
-      abort_other_ranks(n_ranks, 3);
-      return 3;
+      return report_exception(summary);
     }
-  return 0;
+  return success;
 }

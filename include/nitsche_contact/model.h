@@ -295,10 +295,6 @@ namespace NitscheContact
     return s > 0. ? d.l2_norm() / s : std::numeric_limits<double>::quiet_NaN();
   }
 
-  /// The warning for a Nitsche parameter gamma0 below 0.1 (none above it),
-  /// for ModelDescription::warnings of the models that use gamma0.
-  std::vector<std::string>
-  weak_penalty_warnings(double gamma0);
 } // namespace NitscheContact
 
 #endif

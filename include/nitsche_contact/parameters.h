@@ -64,17 +64,6 @@ namespace NitscheContact
   std::string
   number_to_string(double x);
 
-  /// Tensor-product rule with n points per direction on a contact face or
-  /// cell: rule = "gauss" or "lobatto" (Gauss-Lobatto, which includes the
-  /// vertices; needs n >= 2). 'entry' names the parameter in the error.
-  dealii::Quadrature<2>
-  contact_rule(const std::string &rule,
-               unsigned int       n,
-               const std::string &entry);
-
-  /// The documentation string of the 'Contact quadrature rule' entries.
-  extern const char *const contact_rule_help;
-
   /// A nonlinear solve that did not converge (exit status 2).
   class ConvergenceFailure : public std::runtime_error
   {
@@ -195,6 +184,30 @@ namespace NitscheContact
     void
     check_magnitudes(double r) const;
 
+  private:
+    void
+    parse_geometry(dealii::ParameterHandler &prm);
+    void
+    parse_material(dealii::ParameterHandler &prm);
+    void
+    parse_load(dealii::ParameterHandler &prm);
+    void
+    parse_obstacle(dealii::ParameterHandler &prm);
+    void
+    parse_contact(dealii::ParameterHandler &prm);
+    void
+    parse_nonlinear_solver(dealii::ParameterHandler &prm);
+    void
+    parse_output(dealii::ParameterHandler &prm);
+    void
+    parse_reference_solution(dealii::ParameterHandler &prm);
+    /// InputError when the obstacle lies above the contact surface of the
+    /// undeformed body on a clamped or simply supported edge: the rigid
+    /// obstacle problem has no solution there.
+    void
+    check_obstacle_below_supported_edges(dealii::ParameterHandler &prm) const;
+
+  public:
     /// Convenience: the Lame constants of the material.
     double
     lambda() const
@@ -293,20 +306,6 @@ namespace NitscheContact
                       double                  value,
                       const dealii::Point<2> &p);
 
-  /// For the plate models: 'Geometry/Subdivisions' must not ask for cells
-  /// through the thickness (nz = 1); bad_value naming the model otherwise.
-  void
-  require_one_layer(const CommonParameters &prm, const std::string &model);
-
-  /// The largest mu with s v = mu a v for v off the kernel of the symmetric
-  /// positive semidefinite a (eigenvalues above 1e-10 of its largest), s
-  /// symmetric and zero on that kernel: the constant of an inverse
-  /// inequality v^T s v <= mu v^T a v on one cell (the 3D Nitsche trace
-  /// constant, the Kirchhoff GSV constant C_I).
-  double
-  largest_generalized_eigenvalue(const dealii::FullMatrix<double> &s,
-                                 const dealii::FullMatrix<double> &a);
-
   /// Parse a list "x1,y1; x2,y2; ..." of 2D points; throws InputError naming
   /// `entry` on malformed input.
   std::vector<dealii::Point<2>>
@@ -316,24 +315,9 @@ namespace NitscheContact
   std::string
   to_string(EdgeCondition c);
 
-  /// The plate models that insert their kinematics into the 3D Nitsche
-  /// term (Mindlin; Kirchhoff with Nitsche) have sigma_n = lambda (t/2)
-  /// times a curvature trace on the bottom face, so their theta-terms
-  /// -(theta/r) sigma_n sigma_n(v) act on the whole plate and change the
-  /// (tr k)^2 part of the bending form by -theta c, c/D = 3 (1 - nu^2)
-  /// (lambda/E)^2 (h_n/t) / gamma0 (r = gamma0 E / h_n; doc/mindlin.md
-  /// section 2). Returns a warning line when |theta| c/D exceeds 1 % (with
-  /// theta = 1 and c >= D (1 + nu)/2 it adds that coercivity is not
-  /// guaranteed), otherwise an empty string. With friction the Mindlin
-  /// plate also has the tangential theta-term -(theta/r) sigma_t
-  /// sigma_t(v), sigma_t = -mu gamma, which changes its shear stiffness
-  /// kappa_s mu t by -theta c_s, c_s = mu h_n / (kappa_s gamma0 E t):
-  /// pass shear_factor = kappa_s > 0 to include it (in the 1 % test too).
-  std::string
-  theta_bending_bias_warning(const CommonParameters &prm,
-                             double                  h_n,
-                             const std::string      &model,
-                             double                  shear_factor = 0.);
 } // namespace NitscheContact
+
+// (the helpers the models share; declared there)
+#include <nitsche_contact/models/common/model_tools.h>
 
 #endif

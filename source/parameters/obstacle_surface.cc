@@ -1,0 +1,52 @@
+// The rigid obstacle as a height field below the plate.
+#include <nitsche_contact/parameters.h>
+
+#include <cmath>
+
+namespace NitscheContact
+{
+  using namespace dealii;
+
+  ObstacleSurface::ObstacleSurface(const CommonParameters &prm)
+    : type(prm.obstacle_type)
+    , level(prm.obstacle_level)
+    , center(prm.sphere_center)
+    , radius(prm.sphere_radius)
+    , expression(prm.obstacle_expression)
+  {
+    if (type == "function")
+      function = make_parsed_function<2>(prm.obstacle_expression, "", 1,
+                                         "Obstacle/Height");
+  }
+
+  std::string
+  ObstacleSurface::non_finite_message(const unsigned long n_points,
+                                      const Point<2>     *p) const
+  {
+    return "invalid value '" + expression +
+           "' for parameter 'Obstacle/Height': it is not a finite number at " +
+           std::to_string(n_points) + " contact quadrature point" +
+           (n_points == 1 ? "" : "s") +
+           (p ? " (e.g. at (" + number_to_string((*p)[0]) + ", " +
+                  number_to_string((*p)[1]) + "))" :
+                std::string()) +
+           ", between the points where the input check evaluated it; it "
+           "must be a finite number on the whole plate";
+  }
+
+  double
+  ObstacleSurface::height(const Point<2> &p) const
+  {
+    if (type == "plane")
+      return level;
+    if (type == "sphere")
+      {
+        const double dx = p[0] - center[0], dy = p[1] - center[1];
+        const double r2 = dx * dx + dy * dy;
+        if (r2 >= radius * radius)
+          return no_obstacle;
+        return center[2] + std::sqrt(radius * radius - r2);
+      }
+    return function->value(p);
+  }
+} // namespace NitscheContact
