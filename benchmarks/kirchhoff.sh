@@ -41,7 +41,7 @@ sed -e "s/set Number of cycles = .*/set Number of cycles = $cycles/" \
     -e "s/set Format = vtu/set Format = none\n  set Print timings = true/" \
     -e "s/set Tolerance = .*/set Tolerance = $tol/" \
     -e "s/set Maximum iterations = 100/set Maximum iterations = 100\n  set Print iterations = false\n  set Active-set stop = $stop/" \
-    -e "s/set Quadrature points = 6/set Quadrature points = 6\n  set Linear solver = $solver/" \
+    -e "s/set Quadrature points = 6/set Quadrature points = 6\n  subsection Linear solver\n    set Type = $solver\n  end/" \
     -e "s/set Stabilisation alpha = .*/set Stabilisation alpha = $alpha/" \
     -e "s/set Obstacle compliance kappa = .*/set Obstacle compliance kappa = $kappa/" \
     "$here/parameters/paper_kirchhoff.prm" > "$work/bench.prm"

@@ -936,13 +936,7 @@ namespace NitscheContact
 
 
   void
-  HermiteMultigrid::setup(
-    const unsigned int                          nx,
-    const unsigned int                          ny,
-    const Tensor<1, 2>                         &h,
-    const std::vector<types::global_dof_index> &vertex_dofs,
-    const std::vector<bool>                    &constrained,
-    const unsigned int                          max_coarse_dofs)
+  HermiteMultigrid::clear_levels()
   {
     // (objects that point to the old level matrices and patterns go first)
     multigrid.reset();
@@ -952,17 +946,54 @@ namespace NitscheContact
     transfer.reset();
     level_double.clear();
     status_of_levels.clear();
-    nq               = 0; // set_matrices() comes next
-    fine_vertex_dofs = vertex_dofs;
-    ritz_min         = std::numeric_limits<double>::infinity();
-    ritz_max         = 0.;
-    has_top = false;
-    top_nq  = 0;
+    nq       = 0; // set_matrices() comes next
+    ritz_min = std::numeric_limits<double>::infinity();
+    ritz_max = 0.;
+    has_top  = false;
+    top_nq   = 0;
     top_dofs.clear();
     top_constrained.clear();
     top_status_of_levels.clear();
     top_prolong.matrix.clear();
     top_restrict.matrix.clear();
+  }
+
+
+
+  types::global_dof_index
+  HermiteMultigrid::level_dof(const unsigned int l,
+                              const unsigned int i,
+                              const unsigned int j,
+                              const unsigned int k) const
+  {
+    const unsigned int n = (nx0 << l) + 1;
+    return 4 * (i + n * j) + k;
+  }
+
+
+
+  bool
+  HermiteMultigrid::level_dof_constrained(const unsigned int l,
+                                          const unsigned int i,
+                                          const unsigned int j,
+                                          const unsigned int k) const
+  {
+    return bool(level_constrained[l][level_dof(l, i, j, k)]);
+  }
+
+
+
+  void
+  HermiteMultigrid::setup(
+    const unsigned int                          nx,
+    const unsigned int                          ny,
+    const Tensor<1, 2>                         &h,
+    const std::vector<types::global_dof_index> &vertex_dofs,
+    const std::vector<bool>                    &constrained,
+    const unsigned int                          max_coarse_dofs)
+  {
+    clear_levels();
+    fine_vertex_dofs = vertex_dofs;
 
     // The level sizes, coarsest first.
     L   = 0;
@@ -978,16 +1009,47 @@ namespace NitscheContact
     for (unsigned int l = 0; l <= L; ++l)
       level_sets[l] =
         complete_index_set(4 * ((nx0 << l) + 1) * ((ny0 << l) + 1));
+    make_level_constraints(vertex_dofs, constrained);
 
-    // Dof index of dof k at vertex (i, j) of level l: structured numbering
-    // on every level (the caller permutes from and to its DoFHandler
-    // numbering). The constraint pattern of a vertex is the one of the same
-    // vertex on the finest level.
-    const auto index = [&](unsigned int l, unsigned int i, unsigned int j,
-                           unsigned int k) -> types::global_dof_index {
-      const unsigned int n = (nx0 << l) + 1;
-      return 4 * (i + n * j) + k;
-    };
+    // (sized once: a SparseMatrix keeps a pointer to its pattern, so the
+    // FloatMatrix objects must not move)
+    prolong_f  = std::vector<FloatMatrix>(L);
+    restrict_f = std::vector<FloatMatrix>(L);
+    levels     = std::vector<FloatMatrix>(std::max(L, 1u));
+    local_prolongation.resize(L);
+    if (L == 0)
+      make_level_pattern(0);
+    for (unsigned int l = 0; l < L; ++l)
+      {
+        Tensor<1, 2> hc;
+        hc[0] = h[0] * (1u << (L - l));
+        hc[1] = h[1] * (1u << (L - l));
+        make_prolongation(l, hc);
+        make_local_prolongation(l, hc);
+        make_level_pattern(l);
+      }
+    // double-precision level matrices (l < L; the single level when L = 0)
+    level_double = std::vector<SparseMatrix<double>>(std::max(L, 1u));
+    for (unsigned int l = 0; l < level_double.size(); ++l)
+      level_double[l].reinit(levels[l].pattern);
+
+    transfer       = std::make_unique<Transfer>(*this);
+    level_matrices = std::make_unique<LevelMatrices>(*this);
+    smoother       = std::make_unique<Smoother>();
+    coarse         = std::make_unique<CoarseSolver>();
+  }
+
+
+
+  void
+  HermiteMultigrid::make_level_constraints(
+    const std::vector<types::global_dof_index> &vertex_dofs,
+    const std::vector<bool>                    &constrained)
+  {
+    // Structured numbering on every level (the caller permutes from and to
+    // its DoFHandler numbering). The constraint pattern of a vertex is the
+    // one of the same vertex on the finest level.
+    const unsigned int nx = nx0 << L;
     level_constrained.resize(L + 1);
     for (unsigned int l = 0; l <= L; ++l)
       {
@@ -1000,130 +1062,126 @@ namespace NitscheContact
               level_constrained[l][4 * (i + n * j) + k] = constrained
                 [vertex_dofs[4 * ((i << s) + (nx + 1) * (j << s)) + k]];
       }
-    const auto is_constrained = [&](unsigned int l, unsigned int i,
-                                    unsigned int j, unsigned int k) {
-      return bool(
-        level_constrained[l][4 * (i + ((nx0 << l) + 1) * j) + k]);
-    };
+  }
 
-    // (sized once: a SparseMatrix keeps a pointer to its pattern, so the
-    // FloatMatrix objects must not move)
-    prolong_f  = std::vector<FloatMatrix>(L);
-    restrict_f = std::vector<FloatMatrix>(L);
-    levels     = std::vector<FloatMatrix>(std::max(L, 1u));
-    local_prolongation.resize(L);
-    // Level matrix pattern: all couplings within a cell.
-    const auto make_level_pattern = [&](const unsigned int l) {
-      const unsigned int     ncx = nx0 << l, ncy = ny0 << l;
-      DynamicSparsityPattern lsp(level_sets[l].size());
-      types::global_dof_index g[16];
-      for (unsigned int jc = 0; jc < ncy; ++jc)
-        for (unsigned int ic = 0; ic < ncx; ++ic)
-          {
-            for (unsigned int a = 0; a < 16; ++a)
-              g[a] = index(l, ic + (a / 4) % 2, jc + a / 8, a % 4);
-            for (unsigned int a = 0; a < 16; ++a)
-              lsp.add_entries(g[a], g, g + 16, true);
-          }
-      levels[l].pattern.copy_from(lsp);
-      levels[l].matrix.reinit(levels[l].pattern);
-    };
-    if (L == 0)
-      make_level_pattern(0);
-    std::vector<double>              values;
-    std::vector<Tensor<1, 2>>        grads;
-    std::vector<Tensor<2, 2>>        hessians;
-    for (unsigned int l = 0; l < L; ++l)
+
+
+  void
+  HermiteMultigrid::make_level_pattern(const unsigned int l)
+  {
+    // all couplings within a cell
+    const unsigned int      ncx = nx0 << l, ncy = ny0 << l;
+    DynamicSparsityPattern  lsp(level_sets[l].size());
+    types::global_dof_index g[16];
+    for (unsigned int jc = 0; jc < ncy; ++jc)
+      for (unsigned int ic = 0; ic < ncx; ++ic)
+        {
+          for (unsigned int a = 0; a < 16; ++a)
+            g[a] = level_dof(l, ic + (a / 4) % 2, jc + a / 8, a % 4);
+          for (unsigned int a = 0; a < 16; ++a)
+            lsp.add_entries(g[a], g, g + 16, true);
+        }
+    levels[l].pattern.copy_from(lsp);
+    levels[l].matrix.reinit(levels[l].pattern);
+  }
+
+
+
+  void
+  HermiteMultigrid::make_prolongation(const unsigned int  l,
+                                      const Tensor<1, 2> &hc)
+  {
+    const unsigned int ncx = nx0 << l, ncy = ny0 << l;
+    const unsigned int nfx = 2 * ncx, nfy = 2 * ncy;
+
+    // The Hermite basis of a coarse cell (extents hc) and its derivatives
+    // at the nine points (0, 1/2, 1)^2 where fine vertices lie.
+    std::vector<double>       values;
+    std::vector<Tensor<1, 2>> grads;
+    std::vector<Tensor<2, 2>> hessians;
+    std::array<std::array<std::array<double, 16>, 4>, 9> at_point;
+    for (unsigned int p = 0; p < 9; ++p)
       {
-        const unsigned int ncx = nx0 << l, ncy = ny0 << l;
-        const unsigned int nfx = 2 * ncx, nfy = 2 * ncy;
-        Tensor<1, 2>       hc;
-        hc[0] = h[0] * (1u << (L - l));
-        hc[1] = h[1] * (1u << (L - l));
-
-        // The Hermite basis of a coarse cell and its derivatives at the
-        // nine points (0, 1/2, 1)^2 where fine vertices lie.
-        std::array<std::array<std::array<double, 16>, 4>, 9> at_point;
-        for (unsigned int p = 0; p < 9; ++p)
+        fe.evaluate(Point<2>(0.5 * (p % 3), 0.5 * (p / 3)), hc, values,
+                    grads, hessians);
+        for (unsigned int m = 0; m < 16; ++m)
           {
-            fe.evaluate(Point<2>(0.5 * (p % 3), 0.5 * (p / 3)), hc, values,
-                        grads, hessians);
-            for (unsigned int m = 0; m < 16; ++m)
+            at_point[p][0][m] = values[m];
+            at_point[p][1][m] = grads[m][0];
+            at_point[p][2][m] = grads[m][1];
+            at_point[p][3][m] = hessians[m][0][1];
+          }
+      }
+    // The global prolongation P_l of the V-cycle. Visit every entry (fine
+    // dof, coarse dof, value); called once for the sparsity patterns and
+    // once for the values.
+    const auto visit = [&](const auto &entry) {
+      for (unsigned int J = 0; J <= nfy; ++J)
+        for (unsigned int I = 0; I <= nfx; ++I)
+          {
+            if (I % 2 == 0 && J % 2 == 0)
               {
-                at_point[p][0][m] = values[m];
-                at_point[p][1][m] = grads[m][0];
-                at_point[p][2][m] = grads[m][1];
-                at_point[p][3][m] = hessians[m][0][1];
+                for (unsigned int k = 0; k < 4; ++k)
+                  entry(level_dof(l + 1, I, J, k),
+                        level_dof(l, I / 2, J / 2, k),
+                        1.);
+                continue;
+              }
+            const unsigned int ic = std::min(I / 2, ncx - 1);
+            const unsigned int jc = std::min(J / 2, ncy - 1);
+            const auto &basis = at_point[(I - 2 * ic) + 3 * (J - 2 * jc)];
+            for (unsigned int k = 0; k < 4; ++k)
+              {
+                if (level_dof_constrained(l + 1, I, J, k))
+                  continue;
+                for (unsigned int m = 0; m < 16; ++m)
+                  {
+                    const unsigned int v = m / 4, km = m % 4;
+                    const unsigned int vi = ic + v % 2, vj = jc + v / 2;
+                    if (level_dof_constrained(l, vi, vj, km))
+                      continue;
+                    const double a = basis[k][m];
+                    if (std::abs(a) > 1e-12)
+                      entry(level_dof(l + 1, I, J, k),
+                            level_dof(l, vi, vj, km),
+                            a);
+                  }
               }
           }
-        // The global prolongation P_l of the V-cycle. Visit every entry
-        // (fine dof, coarse dof, value); called once for the sparsity
-        // patterns and once for the values.
-        const auto visit = [&](const auto &entry) {
-          for (unsigned int J = 0; J <= nfy; ++J)
-            for (unsigned int I = 0; I <= nfx; ++I)
-              {
-                if (I % 2 == 0 && J % 2 == 0)
-                  {
-                    for (unsigned int k = 0; k < 4; ++k)
-                      entry(index(l + 1, I, J, k), index(l, I / 2, J / 2, k), 1.);
-                    continue;
-                  }
-                const unsigned int ic = std::min(I / 2, ncx - 1);
-                const unsigned int jc = std::min(J / 2, ncy - 1);
-                const auto &basis = at_point[(I - 2 * ic) + 3 * (J - 2 * jc)];
-                for (unsigned int k = 0; k < 4; ++k)
-                  {
-                    if (is_constrained(l + 1, I, J, k))
-                      continue;
-                    for (unsigned int m = 0; m < 16; ++m)
-                      {
-                        const unsigned int v = m / 4, km = m % 4;
-                        const unsigned int vi = ic + v % 2, vj = jc + v / 2;
-                        if (is_constrained(l, vi, vj, km))
-                          continue;
-                        const double a = basis[k][m];
-                        if (std::abs(a) > 1e-12)
-                          entry(index(l + 1, I, J, k), index(l, vi, vj, km), a);
-                      }
-                  }
-              }
-        };
-        make_transfer(level_sets[l + 1].size(),
-                      level_sets[l].size(),
-                      visit,
-                      prolong_f[l],
-                      restrict_f[l]);
+    };
+    make_transfer(level_sets[l + 1].size(),
+                  level_sets[l].size(),
+                  visit,
+                  prolong_f[l],
+                  restrict_f[l]);
+  }
 
-        // The same prolongation restricted to one child cell, for the
-        // Galerkin products cell by cell: dof 4 v + k of the child in
-        // position pos from the 16 dofs of the parent.
-        for (unsigned int pos = 0; pos < 4; ++pos)
-          for (unsigned int v = 0; v < 4; ++v)
-            {
-              const Point<2> unit(0.5 * (pos % 2 + v % 2),
-                                  0.5 * (pos / 2 + v / 2));
-              fe.evaluate(unit, hc, values, grads, hessians);
-              for (unsigned int k = 0; k < 4; ++k)
-                for (unsigned int m = 0; m < 16; ++m)
-                  local_prolongation[l][pos][16 * (4 * v + k) + m] =
-                    (k == 0) ? values[m] :
-                    (k == 1) ? grads[m][0] :
-                    (k == 2) ? grads[m][1] :
-                               hessians[m][0][1];
-            }
 
-        make_level_pattern(l);
-      }
-    // double-precision level matrices (l < L; the single level when L = 0)
-    level_double = std::vector<SparseMatrix<double>>(std::max(L, 1u));
-    for (unsigned int l = 0; l < level_double.size(); ++l)
-      level_double[l].reinit(levels[l].pattern);
 
-    transfer       = std::make_unique<Transfer>(*this);
-    level_matrices = std::make_unique<LevelMatrices>(*this);
-    smoother       = std::make_unique<Smoother>();
-    coarse         = std::make_unique<CoarseSolver>();
+  void
+  HermiteMultigrid::make_local_prolongation(const unsigned int  l,
+                                            const Tensor<1, 2> &hc)
+  {
+    // The prolongation restricted to one child cell, for the Galerkin
+    // products cell by cell: dof 4 v + k of the child in position pos from
+    // the 16 dofs of the parent.
+    std::vector<double>       values;
+    std::vector<Tensor<1, 2>> grads;
+    std::vector<Tensor<2, 2>> hessians;
+    for (unsigned int pos = 0; pos < 4; ++pos)
+      for (unsigned int v = 0; v < 4; ++v)
+        {
+          const Point<2> unit(0.5 * (pos % 2 + v % 2),
+                              0.5 * (pos / 2 + v / 2));
+          fe.evaluate(unit, hc, values, grads, hessians);
+          for (unsigned int k = 0; k < 4; ++k)
+            for (unsigned int m = 0; m < 16; ++m)
+              local_prolongation[l][pos][16 * (4 * v + k) + m] =
+                (k == 0) ? values[m] :
+                (k == 1) ? grads[m][0] :
+                (k == 2) ? grads[m][1] :
+                           hessians[m][0][1];
+        }
   }
 
 
@@ -1422,19 +1480,36 @@ namespace NitscheContact
   {
     for (unsigned int l = 0; l < level_double.size(); ++l)
       level_double[l] = 0.;
-    const FullMatrix<double> &cell_matrix = constant_cell_matrix;
+    add_constant_cell_matrices();
+    add_constrained_diagonals();
 
-    // The part that is the same on every cell. A cell without constrained
-    // dofs has the same restricted matrix ('interior') as every other such
-    // cell of its level if its four children have; the cells with
-    // constrained dofs, and the parents of such cells, are restricted one
-    // by one ('boundary').
+    // the contact matrices of the cells with active points
+    std::vector<unsigned int> cells;
+    std::vector<double>       matrices;
+    for (unsigned int c = 0; c < (nx0 << L) * (ny0 << L); ++c)
+      if (const double *k_c = fine.contact_matrix(c))
+        {
+          cells.push_back(c);
+          matrices.insert(matrices.end(), k_c, k_c + 256);
+        }
+    add_and_finish(cells, matrices);
+  }
+
+
+
+  void
+  HermiteMultigrid::add_constant_cell_matrices()
+  {
+    // A cell without constrained dofs has the same restricted matrix
+    // ('interior') as every other such cell of its level if its four
+    // children have; the cells with constrained dofs, and the parents of
+    // such cells, are restricted one by one ('boundary').
     std::vector<double> interior(256), restricted(256);
     for (unsigned int a = 0; a < 16; ++a)
       for (unsigned int b = 0; b < 16; ++b)
-        interior[16 * a + b] = cell_matrix(a, b);
-    std::vector<unsigned int> boundary, parents;
-    std::vector<double>       boundary_matrices, parent_matrices;
+        interior[16 * a + b] = constant_cell_matrix(a, b);
+    std::vector<unsigned int> boundary;
+    std::vector<double>       boundary_matrices;
     for (unsigned int c = 0; c < (nx0 << L) * (ny0 << L); ++c)
       {
         restricted = interior;
@@ -1448,57 +1523,7 @@ namespace NitscheContact
           }
       }
     for (unsigned int l = L; l-- > 0;)
-      {
-        const unsigned int ncx = nx0 << l, ncy = ny0 << l, nfx = 2 * ncx;
-        // boundary children and their interior siblings
-        std::vector<char> listed_child(std::size_t(nfx) * 2 * ncy, 0);
-        std::vector<char> listed_parent(std::size_t(ncx) * ncy, 0);
-        for (const unsigned int c : boundary)
-          {
-            listed_child[c] = 1;
-            listed_parent[(c % nfx) / 2 + ncx * ((c / nfx) / 2)] = 1;
-          }
-        for (unsigned int p = 0; p < ncx * ncy; ++p)
-          if (listed_parent[p])
-            for (unsigned int pos = 0; pos < 4; ++pos)
-              {
-                const unsigned int child = 2 * (p % ncx) + pos % 2 +
-                                           nfx * (2 * (p / ncx) + pos / 2);
-                if (!listed_child[child])
-                  {
-                    boundary.push_back(child);
-                    boundary_matrices.insert(boundary_matrices.end(),
-                                             interior.begin(),
-                                             interior.end());
-                  }
-              }
-        restrict_cells(l, boundary, boundary_matrices, parents,
-                       parent_matrices);
-        // the interior matrix of level l: the four children of an interior
-        // cell restricted to it (no constrained dofs to remove)
-        std::fill(restricted.begin(), restricted.end(), 0.);
-        for (unsigned int pos = 0; pos < 4; ++pos)
-          add_restricted(l, pos, interior.data(), restricted.data());
-        interior = restricted;
-        add_cells(l, parents, parent_matrices);
-        std::vector<unsigned int> others;
-        std::vector<double>       other_matrices;
-        for (unsigned int p = 0; p < ncx * ncy; ++p)
-          if (!listed_parent[p])
-            {
-              // (all four children are interior cells, so the parent has no
-              // constrained dofs either: checked)
-              restricted = interior;
-              remove_constrained(l, p, restricted.data());
-              AssertThrow(restricted == interior, ExcInternalError());
-              others.push_back(p);
-              other_matrices.insert(other_matrices.end(), interior.begin(),
-                                    interior.end());
-            }
-        add_cells(l, others, other_matrices);
-        boundary.swap(parents);
-        boundary_matrices.swap(parent_matrices);
-      }
+      restrict_constant_cell_matrices(l, interior, boundary, boundary_matrices);
 
     if (L == 0)
       {
@@ -1516,9 +1541,76 @@ namespace NitscheContact
             }
         add_cells(0, boundary, boundary_matrices);
       }
+  }
 
-    // Constrained dofs: on every level the diagonal entry of the same dof
-    // of the finest level.
+
+
+  void
+  HermiteMultigrid::restrict_constant_cell_matrices(
+    const unsigned int         l,
+    std::vector<double>       &interior,
+    std::vector<unsigned int> &boundary,
+    std::vector<double>       &boundary_matrices)
+  {
+    const unsigned int ncx = nx0 << l, ncy = ny0 << l, nfx = 2 * ncx;
+    // boundary children and their interior siblings
+    std::vector<char> listed_child(std::size_t(nfx) * 2 * ncy, 0);
+    std::vector<char> listed_parent(std::size_t(ncx) * ncy, 0);
+    for (const unsigned int c : boundary)
+      {
+        listed_child[c] = 1;
+        listed_parent[(c % nfx) / 2 + ncx * ((c / nfx) / 2)] = 1;
+      }
+    for (unsigned int p = 0; p < ncx * ncy; ++p)
+      if (listed_parent[p])
+        for (unsigned int pos = 0; pos < 4; ++pos)
+          {
+            const unsigned int child =
+              2 * (p % ncx) + pos % 2 + nfx * (2 * (p / ncx) + pos / 2);
+            if (!listed_child[child])
+              {
+                boundary.push_back(child);
+                boundary_matrices.insert(boundary_matrices.end(),
+                                         interior.begin(),
+                                         interior.end());
+              }
+          }
+    std::vector<unsigned int> parents;
+    std::vector<double>       parent_matrices;
+    restrict_cells(l, boundary, boundary_matrices, parents, parent_matrices);
+    // the interior matrix of level l: the four children of an interior
+    // cell restricted to it (no constrained dofs to remove)
+    std::vector<double> restricted(256, 0.);
+    for (unsigned int pos = 0; pos < 4; ++pos)
+      add_restricted(l, pos, interior.data(), restricted.data());
+    interior = restricted;
+    add_cells(l, parents, parent_matrices);
+    std::vector<unsigned int> others;
+    std::vector<double>       other_matrices;
+    for (unsigned int p = 0; p < ncx * ncy; ++p)
+      if (!listed_parent[p])
+        {
+          // (all four children are interior cells, so the parent has no
+          // constrained dofs either: checked)
+          restricted = interior;
+          remove_constrained(l, p, restricted.data());
+          AssertThrow(restricted == interior, ExcInternalError());
+          others.push_back(p);
+          other_matrices.insert(other_matrices.end(),
+                                interior.begin(),
+                                interior.end());
+        }
+    add_cells(l, others, other_matrices);
+    boundary.swap(parents);
+    boundary_matrices.swap(parent_matrices);
+  }
+
+
+
+  void
+  HermiteMultigrid::add_constrained_diagonals()
+  {
+    // on every level the diagonal entry of the same dof of the finest level
     for (unsigned int l = 0; l < level_double.size(); ++l)
       {
         const unsigned int n = (nx0 << l) + 1, m = (ny0 << l) + 1,
@@ -1536,17 +1628,6 @@ namespace NitscheContact
                     fine_diagonal[4 * ((i << s) + nf * (j << s)) + k]);
                 }
       }
-
-    // the contact matrices of the cells with active points
-    std::vector<unsigned int> cells;
-    std::vector<double>       matrices;
-    for (unsigned int c = 0; c < (nx0 << L) * (ny0 << L); ++c)
-      if (const double *k_c = fine.contact_matrix(c))
-        {
-          cells.push_back(c);
-          matrices.insert(matrices.end(), k_c, k_c + 256);
-        }
-    add_and_finish(cells, matrices);
   }
 
 

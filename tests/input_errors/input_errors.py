@@ -83,13 +83,13 @@ CASES = [
     ("unknown obstacle", "subsection Obstacle\n  set Type = cone\nend",
      ["Obstacle/Type", "cone", "sphere"]),
     ("Kirchhoff Krylov tolerance = 0",
-     "set Model = kirchhoff\nsubsection Kirchhoff\n  set Linear solver = multigrid\n"
-     "  set Krylov tolerance = 0\nend",
-     ["Kirchhoff/Krylov tolerance", "'0'", "(0, 1)"]),
+     "set Model = kirchhoff\nsubsection Kirchhoff\n  subsection Linear solver\n"
+     "    set Type = multigrid\n    set Krylov tolerance = 0\n  end\nend",
+     ["Kirchhoff/Linear solver/Krylov tolerance", "'0'", "(0, 1)"]),
     ("Kirchhoff multigrid with the nitsche formulation",
-     "set Model = kirchhoff\nsubsection Kirchhoff\n  set Linear solver = multigrid\n"
-     "  set Contact formulation = nitsche\nend",
-     ["Kirchhoff/Linear solver", "multigrid", "gsv", "direct"]),
+     "set Model = kirchhoff\nsubsection Kirchhoff\n  subsection Linear solver\n"
+     "    set Type = multigrid\n  end\n  set Contact formulation = nitsche\nend",
+     ["Kirchhoff/Linear solver/Type", "multigrid", "gsv", "direct"]),
     ("Mindlin Krylov tolerance = 0",
      "set Model = mindlin\nsubsection Mindlin\n  set Linear solver = multigrid\n"
      "  set Krylov tolerance = 0\nend",
@@ -199,8 +199,15 @@ CASES = [
      "subsection Mindlin\n  set Linear solver = multigrid\nend",
      ["Mindlin/Linear solver", "multigrid", "even", "5, 4"]),
     ("Kirchhoff unknown linear solver",
-     "set Model = kirchhoff\nsubsection Kirchhoff\n  set Linear solver = amg\nend",
-     ["Linear solver", "amg", "multigrid"]),
+     "set Model = kirchhoff\nsubsection Kirchhoff\n  subsection Linear solver\n"
+     "    set Type = amg\n  end\nend",
+     ["Type", "amg", "multigrid"]),
+    ("Kirchhoff moved entry 'Linear solver'",
+     "set Model = kirchhoff\nsubsection Kirchhoff\n  set Linear solver = multigrid\nend",
+     ["Kirchhoff/Linear solver", "no longer exists", "'Type'"]),
+    ("Kirchhoff moved entry 'Direct solver'",
+     "set Model = kirchhoff\nsubsection Kirchhoff\n  set Direct solver = Amesos_Klu\nend",
+     ["Kirchhoff/Direct solver", "no longer exists", "Kirchhoff/Linear solver"]),
     ("Gauss-Lobatto contact rule with one point",
      "subsection Elasticity\n  set Contact quadrature points = 1\n"
      "  set Contact quadrature rule = lobatto\nend",

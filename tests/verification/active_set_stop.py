@@ -58,7 +58,8 @@ penalty = [("Number of cycles", "4"), ("Tolerance", "1e-8"),
            ("Stabilisation alpha", "0"), ("Obstacle compliance kappa", "1e-6")]
 penalty_mg = [("Number of cycles", "5"), ("Tolerance", "1e-8"),
               ("Stabilisation alpha", "0"),
-              ("Obstacle compliance kappa", "1e-6\n  set Linear solver = multigrid")]
+              ("Obstacle compliance kappa",
+               "1e-6\n  subsection Linear solver\n    set Type = multigrid\n  end")]
 elasticity = [("Number of cycles", "2"), ("Subdivisions", "8, 8, 1"),
               ("Tolerance", "1e-6"),
               ("Refine through thickness", "false\n  set Contact quadrature rule = lobatto"),

@@ -1,6 +1,7 @@
 """The sparse direct solver's kept factorisation
 (include/nitsche_contact/solvers/reused_factorization.h) against factorising every
-Newton matrix ('Nonlinear solver/Reuse factorization = false'), the second
+Newton matrix ('Nonlinear solver/Reuse factorization = false', for the
+Kirchhoff model 'Kirchhoff/Linear solver/Reuse factorization = false'), the second
 linear-algebra path of the program:
  - without friction a Newton matrix whose contact status did not change is
    bitwise the factorised one, and the kept factors give exactly the
@@ -25,7 +26,10 @@ from kirchhoff_lib.plate import plate_prm
 
 args = parse_args()
 NO_REUSE = "subsection Nonlinear solver\n  set Reuse factorization = false\nend\n"
-KLU = "subsection Kirchhoff\n  set Direct solver = Amesos_Klu\nend\n"
+KIRCHHOFF_NO_REUSE = ("subsection Kirchhoff\n  subsection Linear solver\n"
+                      "    set Reuse factorization = false\n  end\nend\n")
+KLU = ("subsection Kirchhoff\n  subsection Linear solver\n"
+       "    set Direct solver = Amesos_Klu\n  end\nend\n")
 here = os.path.dirname(os.path.abspath(__file__))
 paper_mindlin = open(os.path.join(here, "..", "..", "parameters", "paper_mindlin.prm")).read()
 
@@ -81,10 +85,10 @@ for theta in (1, -1):
                    alpha=1e-4 if theta == 1 else 1e-3)
     kept, _ = run(args, "kirchhoff_theta%d" % theta, plate_prm(**variant))
     fresh, _ = run(args, "kirchhoff_theta%d_no_reuse" % theta,
-                   plate_prm(extra=NO_REUSE, **variant))
+                   plate_prm(extra=KIRCHHOFF_NO_REUSE, **variant))
     compare("kirchhoff theta %d" % theta, kept, fresh, 1e-13, True)
     if theta == 1:
-        klu, _ = run(args, "kirchhoff_theta1_klu", plate_prm(extra=KLU + NO_REUSE, **variant))
+        klu, _ = run(args, "kirchhoff_theta1_klu", plate_prm(extra=KLU + KIRCHHOFF_NO_REUSE, **variant))
         for cycle, (ck, cf) in enumerate(zip(kept["cycles"], klu["cycles"])):
             close(cf["contact_force"], ck["contact_force"], 1e-8,
                   "kirchhoff theta 1 cycle %d: contact force, KLU vs MUMPS" % cycle)

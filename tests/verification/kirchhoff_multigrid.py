@@ -1,5 +1,5 @@
 """The Kirchhoff model's geometric multigrid solver ('Kirchhoff/Linear
-solver = multigrid': CG or GMRES with a V-cycle over the nested Hermite
+solver/Type = multigrid': CG or GMRES with a V-cycle over the nested Hermite
 spaces) against two independent sources:
  - the reference centre deflections of doc/theory.md 6.1 (clamped 0.00126532,
    simply supported 0.0040623527 q a^4/D) on a 64x64 mesh, which has three
@@ -30,8 +30,8 @@ from common import parse_args, run, close, check, finish
 from kirchhoff_lib.plate import plate_prm
 
 args = parse_args()
-MG = ("subsection Kirchhoff\n  set Linear solver = multigrid\n"
-      "  set Check multigrid = true\nend\n")
+MG = ("subsection Kirchhoff\n  subsection Linear solver\n    set Type = multigrid\n"
+      "    set Check multigrid = true\n  end\nend\n")
 
 
 def average_krylov(cycle):

@@ -1,5 +1,6 @@
 """The L D L^T factorisation of symmetric Newton matrices ('Nonlinear
-solver/Symmetric factorization = true', MUMPS called directly with SYM = 2)
+solver/Symmetric factorization = true', for the Kirchhoff model 'Kirchhoff/
+Linear solver/Symmetric factorization = true', MUMPS called directly with SYM = 2)
 against the LU that Amesos offers (= false), a second method of the program:
 on the paper's 3D test (Q2, 3x3 Gauss-Lobatto contact points, 8x8x1 ->
 16x16x1) and on the paper's Kirchhoff test (GSV, MUMPS) both reach the same
@@ -93,7 +94,8 @@ paper_k = open(os.path.join(params, "paper_kirchhoff.prm")).read()
 
 def prm_k(alpha, symmetric):
     return edit(paper_k, [("Number of cycles", "2"), ("Stabilisation alpha", str(alpha)),
-                          ("Tolerance", "1e-10\n  set Symmetric factorization = %s"
+                          ("Quadrature points", "6\n  subsection Linear solver\n"
+                           "    set Symmetric factorization = %s\n  end"
                            % ("true" if symmetric else "false"))], "paper_kirchhoff.prm")
 
 

@@ -433,6 +433,53 @@ namespace NitscheContact
     /// the status just set (first set_status() of a mesh).
     void
     build_levels();
+    /// build_levels(): the constant cell matrix of every finest cell,
+    /// restricted to and added into every level.
+    void
+    add_constant_cell_matrices();
+    /// One level of add_constant_cell_matrices(): restrict the listed
+    /// level-(l+1) cells (`boundary`, with their matrices) and the interior
+    /// matrix to level l, add the level-l cell matrices, and return the
+    /// listed level-l cells and the level-l interior matrix in place.
+    void
+    restrict_constant_cell_matrices(unsigned int               l,
+                                    std::vector<double>       &interior,
+                                    std::vector<unsigned int> &boundary,
+                                    std::vector<double> &boundary_matrices);
+    /// build_levels(): the diagonal entries of the constrained dofs.
+    void
+    add_constrained_diagonals();
+
+    /// setup(): release the levels of the previous mesh.
+    void
+    clear_levels();
+    /// setup(): level_constrained from the finest level's constraints.
+    void
+    make_level_constraints(
+      const std::vector<dealii::types::global_dof_index> &vertex_dofs,
+      const std::vector<bool>                            &constrained);
+    /// setup(): the sparsity pattern of the level-l matrices.
+    void
+    make_level_pattern(unsigned int l);
+    /// setup(): the global single-precision prolongation from level l to
+    /// l + 1 and its transpose; hc = the extents of a level-l cell.
+    void
+    make_prolongation(unsigned int l, const dealii::Tensor<1, 2> &hc);
+    /// setup(): local_prolongation[l].
+    void
+    make_local_prolongation(unsigned int l, const dealii::Tensor<1, 2> &hc);
+    /// Structured index of dof k at vertex (i, j) of level l.
+    dealii::types::global_dof_index
+    level_dof(unsigned int l,
+              unsigned int i,
+              unsigned int j,
+              unsigned int k) const;
+    /// Whether dof k at vertex (i, j) of level l is constrained.
+    bool
+    level_dof_constrained(unsigned int l,
+                          unsigned int i,
+                          unsigned int j,
+                          unsigned int k) const;
 
     const FE_BicubicHermite<2> &fe;
     MPI_Comm                    comm;

@@ -10,6 +10,16 @@
 //    (t/2) Delta w, r = gamma0 E / t.
 // Uniform Cartesian meshes only, one MPI process; sparse direct solver or
 // CG/GMRES with a geometric multigrid V-cycle (hermite_multigrid.h).
+//
+// The implementation is split by concern over source/models/kirchhoff/:
+//   kirchhoff_model.cc  construction, mesh and cycles, the short interface
+//   parameters.cc       the 'Kirchhoff' and 'Kirchhoff/Linear solver' entries
+//   cell_kit.cc         the data shared by all cells, load and obstacle
+//                       at the quadrature points, the GSV constants
+//   assembly.cc         residual, Newton matrix, energy and line slope
+//   linear_solver.cc    the direct and the multigrid solver
+//   postprocessing.cc   contact results, deflections, errors
+//   output.cc           graphical output
 #ifndef nitsche_contact_models_kirchhoff_h
 #define nitsche_contact_models_kirchhoff_h
 
@@ -43,13 +53,23 @@ namespace NitscheContact
                          public ResidualScale
   {
   public:
-    /// Declare the subsection "Kirchhoff".
+    // ----- construction and parameters (kirchhoff_model.cc, parameters.cc)
+
+    /// Declare the subsections "Kirchhoff" and "Kirchhoff/Linear solver".
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
     KirchhoffModel(const CommonParameters   &common,
                    dealii::ParameterHandler &prm,
                    MPI_Comm                  comm);
+
+    enum class Formulation
+    {
+      gsv,
+      nitsche
+    };
+
+    // ----- the ContactModel interface (kirchhoff_model.cc)
 
     ModelDescription
     describe() const override
@@ -60,38 +80,25 @@ namespace NitscheContact
                 weak_penalty_warnings(prm.gamma0) :
                 std::vector<std::string>()};
     }
+    std::vector<std::pair<std::string, std::string>>
+    description() const;
+    void
+    setup_cycle(unsigned int cycle) override;
     ProblemSize
     problem_size() const override
     {
       return {n_dofs(), mesh_size()};
     }
-    EnergyNorms
-    energy_norms() const override
-    {
-      return {increment_energy_norm(), solution_energy_norm()};
-    }
-    std::vector<std::pair<std::string, std::string>>
-    description() const;
-    void
-    setup_cycle(unsigned int cycle) override;
     std::uint64_t
     n_dofs() const;
     double
     mesh_size() const;
-    ContactCounts
-    assemble(NonlinearScheme scheme, bool with_matrix) override;
-    unsigned int
-    solve_linear() override;
-    void
-    apply_increment(double step) override;
     void
     set_load_factor(double factor) override
     {
       load_factor     = factor;
       trial.valid     = false;
     }
-    double
-    energy() const override;
     double
     load_norm() const override
     {
@@ -102,33 +109,55 @@ namespace NitscheContact
     {
       return load_factor * (unit_load * solution);
     }
-    double
-    energy_slope() const override;
-    bool
-    has_energy() const override;
     void
-    prepare_line_slope() override;
-    double
-    line_slope(double t) const override;
-    bool
-    last_solve_accurate() const override
-    {
-      // direct, or the multigrid's CG/GMRES (model.h) with a Krylov
-      // tolerance no looser than the one measured (a review found steps
-      // from 1-iteration solves at 'Krylov tolerance' 0.3 accepted)
-      return !use_multigrid || krylov_tolerance <= loose_krylov_tolerance;
-    }
-    std::optional<double>
-    estimated_correction() const override;
+    apply_increment(double step) override;
     double
     increment_l2_relative() const override
     {
       return relative_l2(increment, solution);
     }
+    EnergyNorms
+    energy_norms() const override
+    {
+      return {increment_energy_norm(), solution_energy_norm()};
+    }
     double
     increment_energy_norm() const;
     double
     solution_energy_norm() const;
+
+    // ----- assembly, energy and line slope (assembly.cc)
+
+    ContactCounts
+    assemble(NonlinearScheme scheme, bool with_matrix) override;
+    bool
+    has_energy() const override;
+    double
+    energy() const override;
+    double
+    energy_slope() const override;
+    void
+    prepare_line_slope() override;
+    double
+    line_slope(double t) const override;
+
+    // ----- the linear solver (linear_solver.cc)
+
+    unsigned int
+    solve_linear() override;
+    bool
+    last_solve_accurate() const override
+    {
+      // direct, or the multigrid's CG/GMRES (model.h) with a Krylov
+      // tolerance no looser than the loose one (a looser tolerance can end
+      // a solve after one iteration with a step the Newton test accepts)
+      return !use_multigrid || krylov_tolerance <= loose_krylov_tolerance;
+    }
+    std::optional<double>
+    estimated_correction() const override;
+
+    // ----- results (postprocessing.cc, output.cc)
+
     CycleResults
     postprocess(const std::vector<dealii::Point<2>> &probes) override;
     std::vector<ContactPointRecord>
@@ -138,6 +167,8 @@ namespace NitscheContact
     std::vector<std::pair<std::string, std::string>>
     write_graphical_output(const std::string &directory,
                            unsigned int       cycle) const override;
+
+    // ----- for tests
 
     /// For tests (finite-difference checks of the Jacobian and of the
     /// energy): the current iterate U (may be modified; constrained
@@ -158,7 +189,7 @@ namespace NitscheContact
     void
     jacobian_vmult(dealii::Vector<double> &y,
                    const dealii::Vector<double> &x) const;
-    /// 'Linear solver = multigrid': bring the multigrid to the contact
+    /// 'Linear solver/Type = multigrid': bring the multigrid to the contact
     /// status of the last assembled matrix (and check it if asked).
     void
     update_multigrid() const;
@@ -167,12 +198,6 @@ namespace NitscheContact
     {
       return constraints;
     }
-
-    enum class Formulation
-    {
-      gsv,
-      nitsche
-    };
 
   private:
     /// Everything that is the same on every cell of the uniform mesh:
@@ -212,97 +237,84 @@ namespace NitscheContact
       double inverse_constant = 0.;
     };
 
+    // ----- parameters (parameters.cc)
+
+    /// Read the subsections "Kirchhoff" and "Kirchhoff/Linear solver",
+    /// parse the exact derivatives and check the values.
+    void
+    read_parameters(dealii::ParameterHandler &param);
+    /// The entries of "Kirchhoff/Linear solver" (in that subsection).
+    void
+    read_linear_solver_parameters(dealii::ParameterHandler &param);
+    /// The checks of the values read that involve more than one entry.
+    void
+    check_parameters() const;
+    /// Parse 'Reference solution/Exact solution' and check the exact
+    /// solution and derivatives on the plate (texts for the messages).
+    void
+    check_exact_solution(const std::string &gradient_text,
+                         const std::string &hessian_text);
+
+    // ----- mesh and space (kirchhoff_model.cc)
+
     void
     make_grid();
+    /// The space of the current mesh and everything that depends on it.
     void
     setup_dofs();
+    /// setup_dofs(): the edge constraints.
+    void
+    make_constraints();
+    /// setup_dofs(): cells and cell_dofs in lexicographic order.
+    void
+    number_cells();
+    /// setup_cycle(): carry the solution of the previous (once coarser)
+    /// mesh onto the current one by Hermite interpolation.
+    void
+    interpolate_from_coarser(unsigned int               old_nx,
+                             unsigned int               old_ny,
+                             const dealii::Tensor<1, 2> &old_h,
+                             const std::vector<double>  &old_coefficients);
+
+    // ----- per-cell data (cell_kit.cc)
+
     void
     build_cell_kit();
-    /// The contact part of the Jacobian of a cell whose points have the
-    /// given status (nonzero: active), without the inactive part (that is
-    /// in constant_cell_matrix); false, and m untouched, if no point is
-    /// active.
-    bool
-    active_contact_matrix(const unsigned char        *status,
-                          dealii::FullMatrix<double> &m) const;
-    /// Kernel input at quadrature point q of cell c for local values U_c.
-    PointInput
-    point_input(unsigned int c, unsigned int q, const double *u_local) const;
+    /// build_cell_kit(): r, lambda_scale and sigma_terms of the formulation.
+    void
+    set_kernel_parameters();
+    /// build_cell_kit(): shape values and derivatives at the quadrature
+    /// points and the bending matrix.
+    void
+    tabulate_shapes();
+    /// build_cell_kit(): the kernel linearisations of the shape functions
+    /// and the contact Jacobians of one point.
+    void
+    make_contact_matrices();
+    /// The GSV inverse-inequality constant C_I of a cell (0 unless gsv with
+    /// sigma_n terms).
     double
-    energy_norm(const dealii::Vector<double> &v) const;
-    /// Whether the formulation is the gradient of an energy (theta = 1, or
-    /// the pure penalty).
-    /// Contact energy density at a point (see energy()).
-    static double
-    energy_density(const PointInput &in, const PointState &st);
-    bool
-    jacobian_is_symmetric() const;
-    /// Locate the cell containing p and the unit point; false if outside.
-    bool
-    locate(const dealii::Point<2> &p,
-           unsigned int           &cell_index,
-           dealii::Point<2>       &unit) const;
+    gsv_inverse_constant() const;
+    /// Print the warnings about the parameters on this mesh (theta bias,
+    /// GSV coercivity bound), each once per run.
+    void
+    warn_about_formulation();
+    /// Load and obstacle at the quadrature points (where they vary).
+    void
+    tabulate_load_and_obstacle();
+    /// Warn (once per run) where the GSV term shifts the contact condition
+    /// by more than 1 % of the largest initial gap.
+    void
+    warn_about_gsv_shift();
+
+    // ----- assembly (assembly.cc)
+
+    /// load factor * f and psi at quadrature point q of cell c
     double
     load_at(unsigned int c, unsigned int q) const;
     double
     psi_at(unsigned int c, unsigned int q) const;
 
-    const CommonParameters &prm;
-    MPI_Comm                comm;
-
-    // "Kirchhoff" subsection
-    Formulation  formulation;
-    double       alpha_D;  ///< alpha D (dimensionless)
-    double       kappa;    ///< obstacle compliance
-    unsigned int n_quadrature;
-    std::string  direct_solver;
-    bool         use_multigrid = false; ///< "Linear solver = multigrid"
-    double       krylov_tolerance = 1e-9;
-    /// Krylov tolerance while the contact status still changes
-    static constexpr double loose_krylov_tolerance = 1e-2;
-    /// whether the last assemble(.., true) saw no status change
-    bool status_settled = false;
-    std::unique_ptr<HermiteMultigrid> multigrid;
-    /// 'Linear solver = direct'
-    std::unique_ptr<ReusedFactorization> factorization;
-    /// 'Check multigrid': verify the level matrices after every update
-    bool                       check_multigrid = false;
-    /// whether system_matrix is assembled (direct solver, or the check of
-    /// the multigrid)
-    bool                       assembled_matrix = true;
-    /// bending + inactive contact matrix of every cell
-    dealii::FullMatrix<double> constant_cell_matrix;
-    /// prepare_line_search(): phi'(t) = line_constant + t line_linear +
-    /// sum over the points whose contact state changes in (0, 1) of
-    /// -coefficient * min(s0 + t ds, 0), stored as (s0, ds, coefficient)
-    double              line_constant = 0., line_linear = 0.;
-    std::vector<double> line_switching;
-    std::unique_ptr<dealii::FunctionParser<2>> exact_value, exact_gradient,
-      exact_hessian;
-
-    double D;   ///< bending stiffness
-    double lambda_eps; ///< lambda_L t/2 (Kirchhoff with Nitsche)
-
-    dealii::Triangulation<2>       triangulation;
-    FE_BicubicHermite<2>           fe;
-    dealii::DoFHandler<2>          dof_handler;
-    dealii::MappingCartesian<2>    mapping;
-    dealii::AffineConstraints<double> constraints;
-    dealii::QGauss<2>              quadrature;
-
-    unsigned int nx = 0, ny = 0; ///< cells per direction
-    /// Active cells in lexicographic order (ix + nx iy).
-    std::vector<dealii::DoFHandler<2>::active_cell_iterator> cells;
-    /// 16 global dof indices per cell, same order.
-    std::vector<dealii::types::global_dof_index> cell_dofs;
-
-    CellKit kit;
-    /// the GSV coercivity warning was printed (once per run)
-    bool coercivity_warned = false;
-    /// the theta-term bias warning of Kirchhoff with Nitsche was printed
-    bool bias_warned = false;
-    /// the GSV term's shift of the contact condition was reported
-    bool shift_warned = false;
     /// u[0..15] = the 16 coefficients of v on cell c (lexicographic index)
     void
     cell_coefficients(const dealii::Vector<double> &v,
@@ -311,25 +323,136 @@ namespace NitscheContact
     /// a = (cell bending matrix) u, for the 16 coefficients of one cell
     void
     bending_product(const double *u, double *a) const;
-    bool    load_is_constant = true, psi_is_constant = true;
-    double  load_constant = 0., psi_constant = 0.;
-    double  load_factor = 1.; ///< load stepping (set_load_factor)
-    std::vector<double> load_values, psi_values; ///< per (cell, q)
-
-    dealii::Vector<double> solution, base, increment;
-    dealii::TrilinosWrappers::SparseMatrix system_matrix;
-    /// The part of the Jacobian that does not depend on the contact status:
-    /// bending plus the kernel Jacobian of every point in the inactive
-    /// state (assembled once per cycle).
-    dealii::TrilinosWrappers::SparseMatrix constant_matrix;
+    /// Kernel input at quadrature point q of cell c for local values U_c.
+    PointInput
+    point_input(unsigned int c, unsigned int q, const double *u_local) const;
+    /// Contact energy density at a point (see energy()).
+    static double
+    energy_density(const PointInput &in, const PointState &st);
+    double
+    energy_norm(const dealii::Vector<double> &v) const;
+    /// unit_load and unit_load_norm: F at load factor 1.
+    void
+    assemble_unit_load();
+    /// The contact part of the Jacobian of a cell whose points have the
+    /// given status (nonzero: active), without the inactive part (that is
+    /// in constant_cell_matrix); false, and m untouched, if no point is
+    /// active.
+    bool
+    active_contact_matrix(const unsigned char        *status,
+                          dealii::FullMatrix<double> &m) const;
     /// system_matrix = constant_matrix + the status-dependent contact
     /// terms of the points with status[c nq + q] != 0 (only the cells with
     /// an active point are visited).
     void
     assemble_matrix(const std::vector<unsigned char> &status);
-    dealii::Vector<double>                 rhs; ///< -R(U), condensed
+    /// Whether the Newton matrix is symmetric (theta = 1, or the pure
+    /// penalty).
+    bool
+    jacobian_is_symmetric() const;
+
+    // ----- linear solver (linear_solver.cc)
+
+    /// setup_dofs(): the Trilinos matrices (direct solver, or the check of
+    /// the multigrid) and the multigrid hierarchy.
+    void
+    setup_linear_system();
+    /// setup_dofs(): the multigrid hierarchy of the mesh.
+    void
+    setup_multigrid();
+    /// setup_dofs(): constant_cell_matrix, constant_matrix and the
+    /// multigrid's cell matrices.
+    void
+    setup_constant_matrix();
+
+    // ----- postprocessing (postprocessing.cc)
+
+    /// Locate the cell containing p and the unit point; false if outside.
+    bool
+    locate(const dealii::Point<2> &p,
+           unsigned int           &cell_index,
+           dealii::Point<2>       &unit) const;
+    /// L2, H1 and H2 errors against the exact solution.
+    void
+    compute_errors(CycleResults &res) const;
+
+    // ----- common parameters, communicator
+
+    const CommonParameters &prm;
+    MPI_Comm                comm;
+
+    // ----- the "Kirchhoff" subsection
+    Formulation  formulation;
+    double       alpha_D;  ///< alpha D (dimensionless)
+    double       kappa;    ///< obstacle compliance
+    unsigned int n_quadrature;
+    std::unique_ptr<dealii::FunctionParser<2>> exact_value, exact_gradient,
+      exact_hessian;
+
+    // ----- the "Kirchhoff/Linear solver" subsection
+    std::string  direct_solver;
+    bool         use_multigrid = false; ///< "Type = multigrid"
+    double       krylov_tolerance = 1e-9;
+    /// Krylov tolerance while the contact status still changes
+    static constexpr double loose_krylov_tolerance = 1e-2;
+    /// 'Check multigrid': verify the level matrices after every update
+    bool                       check_multigrid = false;
+
+    // ----- material and load
+    double D;   ///< bending stiffness
+    double lambda_eps; ///< lambda_L t/2 (Kirchhoff with Nitsche)
+    std::unique_ptr<dealii::FunctionParser<2>> load_function;
+    ObstacleSurface                            obstacle;
+    bool    load_is_constant = true, psi_is_constant = true;
+    double  load_constant = 0., psi_constant = 0.;
+    double  load_factor = 1.; ///< load stepping (set_load_factor)
+    std::vector<double> load_values, psi_values; ///< per (cell, q)
     double unit_load_norm = 0.; ///< |F| at load factor 1 (setup_dofs)
     dealii::Vector<double> unit_load; ///< F at load factor 1 (setup_dofs)
+
+    // ----- mesh and space
+    dealii::Triangulation<2>       triangulation;
+    FE_BicubicHermite<2>           fe;
+    dealii::DoFHandler<2>          dof_handler;
+    dealii::MappingCartesian<2>    mapping;
+    dealii::AffineConstraints<double> constraints;
+    dealii::QGauss<2>              quadrature;
+    unsigned int nx = 0, ny = 0; ///< cells per direction
+    /// Active cells in lexicographic order (ix + nx iy).
+    std::vector<dealii::DoFHandler<2>::active_cell_iterator> cells;
+    /// 16 global dof indices per cell, same order.
+    std::vector<dealii::types::global_dof_index> cell_dofs;
+    CellKit kit;
+
+    // ----- warnings printed once per run
+    /// the GSV coercivity warning was printed
+    bool coercivity_warned = false;
+    /// the theta-term bias warning of Kirchhoff with Nitsche was printed
+    bool bias_warned = false;
+    /// the GSV term's shift of the contact condition was reported
+    bool shift_warned = false;
+
+    // ----- the iterate and the linear system
+    dealii::Vector<double> solution, base, increment;
+    dealii::Vector<double>                 rhs; ///< -R(U), condensed
+    dealii::TrilinosWrappers::SparseMatrix system_matrix;
+    /// The part of the Jacobian that does not depend on the contact status:
+    /// bending plus the kernel Jacobian of every point in the inactive
+    /// state (assembled once per cycle).
+    dealii::TrilinosWrappers::SparseMatrix constant_matrix;
+    /// bending + inactive contact matrix of every cell
+    dealii::FullMatrix<double> constant_cell_matrix;
+    /// whether system_matrix is assembled (direct solver, or the check of
+    /// the multigrid)
+    bool                       assembled_matrix = true;
+    /// 'Type = direct'
+    std::unique_ptr<ReusedFactorization> factorization;
+    /// 'Type = multigrid'
+    std::unique_ptr<HermiteMultigrid> multigrid;
+    /// whether the last assemble(.., true) saw no status change
+    bool status_settled = false;
+
+    // ----- assembly state
     std::vector<unsigned char>             previous_status;
     /// work arrays of assemble(): per cell the 16 entries of -R and the
     /// contact energy, per point the status just computed
@@ -350,9 +473,11 @@ namespace NitscheContact
     } trial;
     /// Contact part of energy() at the iterate of the last assemble().
     double last_contact_energy = 0.;
-
-    std::unique_ptr<dealii::FunctionParser<2>> load_function;
-    ObstacleSurface                            obstacle;
+    /// prepare_line_search(): phi'(t) = line_constant + t line_linear +
+    /// sum over the points whose contact state changes in (0, 1) of
+    /// -coefficient * min(s0 + t ds, 0), stored as (s0, ds, coefficient)
+    double              line_constant = 0., line_linear = 0.;
+    std::vector<double> line_switching;
   };
 } // namespace NitscheContact
 
