@@ -179,8 +179,7 @@ namespace NitscheContact
     /// InputError naming the entries unless the bending stiffness, the
     /// deflection scale |q| L^4 / D and, for r > 0 (the Nitsche parameter
     /// of the model's contact term), r and r |q| L^6 / D are finite and
-    /// nonzero double numbers. Called by parse() (3D and Mindlin: r =
-    /// gamma0 E / t) and by models with a contact term of their own.
+    /// nonzero double numbers (models call it).
     void
     check_magnitudes(double r) const;
 
@@ -201,13 +200,21 @@ namespace NitscheContact
     parse_output(dealii::ParameterHandler &prm);
     void
     parse_reference_solution(dealii::ParameterHandler &prm);
-    /// InputError when the obstacle lies above the contact surface of the
-    /// undeformed body on a clamped or simply supported edge: the rigid
-    /// obstacle problem has no solution there.
-    void
-    check_obstacle_below_supported_edges(dealii::ParameterHandler &prm) const;
 
   public:
+    /// InputError unless the first mesh, the coarse mesh refined
+    /// 'Initial refinement' times into `children_per_refinement` cells
+    /// each, has at most 1e7 cells (models call it).
+    void
+    check_first_mesh_size(unsigned int children_per_refinement) const;
+
+    /// InputError when the rigid obstacle lies above `surface`, the height
+    /// of the undeformed body's contact surface, on a clamped or simply
+    /// supported edge: the contact problem has no solution there (models
+    /// with a rigid obstacle call it).
+    void
+    check_obstacle_below_supported_edges(double surface) const;
+
     /// Convenience: the Lame constants of the material.
     double
     lambda() const

@@ -309,42 +309,40 @@ namespace NitscheContact
     parse_load(prm);
     parse_obstacle(prm);
     parse_contact(prm);
-    // Magnitudes (the Kirchhoff model checks its Nitsche variant itself:
-    // its contact formulation is its own parameter)
-    check_magnitudes(model == "kirchhoff" ?
-                       0. :
-                       gamma0 * youngs_modulus / thickness);
     parse_nonlinear_solver(prm);
     parse_output(prm);
     parse_reference_solution(prm);
-    check_obstacle_below_supported_edges(prm);
+  }
+
+  void
+  CommonParameters::check_first_mesh_size(
+    const unsigned int children_per_refinement) const
+  {
+    // (the first mesh must fit in memory; later cycles refine it)
+    if (double(subdivisions[0]) * subdivisions[1] * subdivisions[2] *
+          std::pow(double(children_per_refinement), initial_refinement) >
+        1e7)
+      {
+        std::string text;
+        for (const unsigned int n : subdivisions)
+          text += (text.empty() ? "" : ", ") + std::to_string(n);
+        bad_value("Geometry/Subdivisions",
+                  text + "' with 'Initial refinement = " +
+                    std::to_string(initial_refinement),
+                  "the first mesh would have more than 1e7 cells; start "
+                  "coarser and refine with 'Number of cycles'");
+      }
   }
 
   void
   CommonParameters::check_obstacle_below_supported_edges(
-    ParameterHandler &prm) const
+    const double surface) const
   {
     // An obstacle above an edge whose deflection is held at 0 (clamped or
     // simply supported) leaves the rigid-obstacle problem without a
     // solution; the Nitsche terms would then return a meaningless
-    // equilibrium with a huge reaction. The contact surface of the
-    // undeformed body is its bottom face x3 = -t/2 (3D model, and the plate
-    // models with the bottom-face convention) or the mid-plane. A compliant
-    // obstacle (plate models, kappa > 0: an elastic foundation) is well
-    // posed there, and is not checked.
-    double kappa = 0.;
-    if (model == "kirchhoff" || model == "mindlin")
-      {
-        prm.enter_subsection(model == "kirchhoff" ? "Kirchhoff" : "Mindlin");
-        kappa = prm.get_double("Obstacle compliance kappa");
-        prm.leave_subsection();
-      }
-    if (!(kappa > 0.))
+    // equilibrium with a huge reaction.
     {
-      const double surface =
-        (model != "elasticity" && obstacle_level_is_midplane) ?
-          0. :
-          -0.5 * thickness;
       const ObstacleSurface obstacle(*this);
       const char *const     names[4] = {"x = 0", "x = Lx", "y = 0", "y = Ly"};
       const unsigned int    n        = 100;
@@ -440,14 +438,6 @@ namespace NitscheContact
     initial_refinement = prm.get_integer("Initial refinement");
     // (the first mesh must fit in memory; later cycles refine it; a
     // global refinement splits a cell into 4 (plates) or 8 (3D))
-    if (double(subdivisions[0]) * subdivisions[1] * subdivisions[2] *
-          std::pow(model == "elasticity" ? 8. : 4., initial_refinement) >
-        1e7)
-      bad_value("Geometry/Subdivisions",
-                prm.get("Subdivisions") + "' with 'Initial refinement = " +
-                  std::to_string(initial_refinement),
-                "the first mesh would have more than 1e7 cells; start "
-                "coarser and refine with 'Number of cycles'");
     n_cycles           = prm.get_integer("Number of cycles");
   }
   prm.leave_subsection();

@@ -202,6 +202,14 @@ namespace NitscheContact
   void
   KirchhoffModel::check_parameters() const
   {
+    // the checks of the common input that depend on the model: a plate
+    // cell refines into 4, the contact surface is the bottom face or the
+    // mid-plane, and a compliant obstacle may lie above a supported edge
+    prm.check_first_mesh_size(4);
+    prm.check_magnitudes(0.);
+    if (!(kappa > 0.))
+      prm.check_obstacle_below_supported_edges(
+        prm.obstacle_level_is_midplane ? 0. : -0.5 * prm.thickness);
     if (!(alpha_D >= 0.))
       bad_value("Kirchhoff/Stabilisation alpha", number_to_string(alpha_D), "must be >= 0");
     if (!(krylov_tolerance > 0. && krylov_tolerance < 1.))
