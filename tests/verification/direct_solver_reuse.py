@@ -1,6 +1,7 @@
 """The sparse direct solver's kept factorisation
 (include/nitsche_contact/solvers/reused_factorization.h) against factorising every
-Newton matrix ('Nonlinear solver/Reuse factorization = false'), the second
+Newton matrix ('Nonlinear solver/Reuse factorization = false', for the
+Mindlin plate 'Mindlin/Linear solver/Reuse factorization = false'), the second
 linear-algebra path of the program:
  - without friction a Newton matrix whose contact status did not change is
    bitwise the factorised one, and the kept factors give exactly the
@@ -25,6 +26,8 @@ from kirchhoff_lib.plate import plate_prm
 
 args = parse_args()
 NO_REUSE = "subsection Nonlinear solver\n  set Reuse factorization = false\nend\n"
+MINDLIN_NO_REUSE = ("subsection Mindlin\n  subsection Linear solver\n"
+                    "    set Reuse factorization = false\n  end\nend\n")
 KLU = "subsection Kirchhoff\n  set Direct solver = Amesos_Klu\nend\n"
 here = os.path.dirname(os.path.abspath(__file__))
 paper_mindlin = open(os.path.join(here, "..", "..", "parameters", "paper_mindlin.prm")).read()
@@ -93,7 +96,7 @@ for theta, friction in ((1, 0), (0, 0.2)):
     tag = "mindlin theta %d F %g" % (theta, friction)
     name = "mindlin_theta%d_F%g" % (theta, friction)
     kept, _ = run(args, name, mindlin_prm(theta, friction))
-    fresh, _ = run(args, name + "_no_reuse", mindlin_prm(theta, friction, NO_REUSE))
+    fresh, _ = run(args, name + "_no_reuse", mindlin_prm(theta, friction, MINDLIN_NO_REUSE))
     compare(tag, kept, fresh, 1e-13 if friction == 0 else 1e-8, friction == 0)
 
 for friction in (0, 0.3):
