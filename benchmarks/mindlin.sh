@@ -36,7 +36,7 @@ case "$element" in
 esac
 case "$solver" in
   direct) solver_line="" ;;
-  multigrid) solver_line="\n  set Linear solver = multigrid" ;;
+  multigrid) solver_line="\n  subsection Linear solver\n    set Type = multigrid\n  end" ;;
   *) echo "benchmarks/mindlin.sh: solver must be 'direct' or 'multigrid', not '$solver'" >&2; exit 1 ;;
 esac
 solver_line="$solver_line\n  set Obstacle compliance kappa = $kappa"

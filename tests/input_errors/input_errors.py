@@ -91,9 +91,12 @@ CASES = [
      "    set Type = multigrid\n  end\n  set Contact formulation = nitsche\nend",
      ["Kirchhoff/Linear solver/Type", "multigrid", "gsv", "direct"]),
     ("Mindlin Krylov tolerance = 0",
-     "set Model = mindlin\nsubsection Mindlin\n  set Linear solver = multigrid\n"
-     "  set Krylov tolerance = 0\nend",
-     ["Mindlin/Krylov tolerance", "'0'", "(0, 1)"]),
+     "set Model = mindlin\nsubsection Mindlin\n  subsection Linear solver\n    set Type = multigrid\n"
+     "    set Krylov tolerance = 0\n  end\nend",
+     ["Mindlin/Linear solver/Krylov tolerance", "'0'", "(0, 1)"]),
+    ("Mindlin linear solver entry of the old layout",
+     "set Model = mindlin\nsubsection Mindlin\n  set Linear solver = multigrid\nend",
+     ["Mindlin/Linear solver", "no longer exists", "'Type'", "'Direct solver'"]),
     ("elasticity tangential traction on a plate free in its plane",
      "subsection Geometry\n  set Edge conditions = free, free, free, free\nend\n"
      "subsection Obstacle\n  set Level = 0.5\nend\n"
@@ -183,12 +186,12 @@ CASES = [
      ["Output/Field grid points", "'1'", "at least 2"]),
     ("Mindlin multigrid with friction",
      "set Model = mindlin\nsubsection Contact\n  set Friction coefficient = 0.2\nend\n"
-     "subsection Mindlin\n  set Linear solver = multigrid\nend",
-     ["Mindlin/Linear solver", "multigrid", "Friction coefficient"]),
+     "subsection Mindlin\n  subsection Linear solver\n    set Type = multigrid\n  end\nend",
+     ["Mindlin/Linear solver/Type", "multigrid", "Friction coefficient"]),
     ("Mindlin multigrid with MITC9",
-     "set Model = mindlin\nsubsection Mindlin\n  set Linear solver = multigrid\n"
+     "set Model = mindlin\nsubsection Mindlin\n  subsection Linear solver\n    set Type = multigrid\n  end\n"
      "  set Shear treatment = MITC9\nend",
-     ["Mindlin/Linear solver", "multigrid", "MITC9", "Amesos_Mumps"]),
+     ["Mindlin/Linear solver/Type", "multigrid", "MITC9", "Type = direct"]),
     ("MITC9 with 2 contact points per direction",
      "set Model = mindlin\nsubsection Geometry\n  set Subdivisions = 2, 2\nend\n"
      "subsection Mindlin\n  set Shear treatment = MITC9\n"
@@ -196,8 +199,8 @@ CASES = [
      ["Mindlin/Contact quadrature points", "'2'", "MITC9", "at least 3"]),
     ("Mindlin multigrid on an odd number of cells",
      "set Model = mindlin\nsubsection Geometry\n  set Subdivisions = 5, 4\nend\n"
-     "subsection Mindlin\n  set Linear solver = multigrid\nend",
-     ["Mindlin/Linear solver", "multigrid", "even", "5, 4"]),
+     "subsection Mindlin\n  subsection Linear solver\n    set Type = multigrid\n  end\nend",
+     ["Mindlin/Linear solver/Type", "multigrid", "even", "5, 4"]),
     ("Kirchhoff unknown linear solver",
      "set Model = kirchhoff\nsubsection Kirchhoff\n  subsection Linear solver\n"
      "    set Type = amg\n  end\nend",

@@ -68,13 +68,13 @@ elasticity = [("Number of cycles", "2"), ("Subdivisions", "8, 8, 1"),
 # cycle wanders for 59 iterations, and the round-off left by a stop on the
 # cycle before, below the tolerance, steers it onto another path)
 mindlin_mg = [("Number of cycles", "4"),
-              ("Membrane unknowns", "auto\n  set Linear solver = multigrid\n"
+              ("Membrane unknowns", "auto\n  subsection Linear solver\n    set Type = multigrid\n  end\n"
                "  set Contact quadrature points = 2\n"
                "  set Contact quadrature rule = lobatto")]
 two_level = [(e, v + "\n  set Linear solver = two-level\n  set Krylov tolerance = 1e-8"
               if e == "Refine through thickness" else v) for e, v in elasticity]
 compliant_mg = [("Number of cycles", "5"),
-                ("Membrane unknowns", "auto\n  set Linear solver = multigrid\n"
+                ("Membrane unknowns", "auto\n  subsection Linear solver\n    set Type = multigrid\n  end\n"
                  "  set Obstacle compliance kappa = 1e-5\n"
                  "  set Contact quadrature points = 2\n"
                  "  set Contact quadrature rule = lobatto")]

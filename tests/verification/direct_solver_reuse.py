@@ -1,7 +1,7 @@
 """The sparse direct solver's kept factorisation
 (include/nitsche_contact/solvers/reused_factorization.h) against factorising every
 Newton matrix ('Nonlinear solver/Reuse factorization = false', for the
-Kirchhoff model 'Kirchhoff/Linear solver/Reuse factorization = false'), the second
+models' '<Model>/Linear solver/Reuse factorization = false'), the second
 linear-algebra path of the program:
  - without friction a Newton matrix whose contact status did not change is
    bitwise the factorised one, and the kept factors give exactly the
@@ -30,6 +30,8 @@ KIRCHHOFF_NO_REUSE = ("subsection Kirchhoff\n  subsection Linear solver\n"
                       "    set Reuse factorization = false\n  end\nend\n")
 KLU = ("subsection Kirchhoff\n  subsection Linear solver\n"
        "    set Direct solver = Amesos_Klu\n  end\nend\n")
+MINDLIN_NO_REUSE = ("subsection Mindlin\n  subsection Linear solver\n"
+                    "    set Reuse factorization = false\n  end\nend\n")
 here = os.path.dirname(os.path.abspath(__file__))
 paper_mindlin = open(os.path.join(here, "..", "..", "parameters", "paper_mindlin.prm")).read()
 
@@ -97,7 +99,7 @@ for theta, friction in ((1, 0), (0, 0.2)):
     tag = "mindlin theta %d F %g" % (theta, friction)
     name = "mindlin_theta%d_F%g" % (theta, friction)
     kept, _ = run(args, name, mindlin_prm(theta, friction))
-    fresh, _ = run(args, name + "_no_reuse", mindlin_prm(theta, friction, NO_REUSE))
+    fresh, _ = run(args, name + "_no_reuse", mindlin_prm(theta, friction, MINDLIN_NO_REUSE))
     compare(tag, kept, fresh, 1e-13 if friction == 0 else 1e-8, friction == 0)
 
 for friction in (0, 0.3):

@@ -66,7 +66,9 @@ subsection Mindlin
   set Obstacle compliance kappa = %g
   set Contact quadrature points = 2
   set Contact quadrature rule = lobatto
-  set Linear solver = %s
+  subsection Linear solver
+    set Type = %s
+  end
 end
 subsection Nonlinear solver
   set Tolerance = 1e-8
@@ -74,7 +76,8 @@ end
 subsection Output
   set Probe points = 0.5, 0.5; 0.1, 0.9; 0, 0
 end
-""" % (T, E, NU, Q, -T / 2, theta, GAMMA0, kappa, solver)
+""" % (T, E, NU, Q, -T / 2, theta, GAMMA0, kappa,
+       "multigrid" if solver == "multigrid" else "direct")
 
 
 for theta, kappa, solver in ((0, 1e-3, "Amesos_Mumps"), (0, 1e-3, "multigrid"),
@@ -82,7 +85,8 @@ for theta, kappa, solver in ((0, 1e-3, "Amesos_Mumps"), (0, 1e-3, "multigrid"),
     tag = "free_theta%d_kappa%g_%s" % (theta, kappa, solver)
     text = free_plate(theta, kappa, solver)
     if solver == "multigrid":
-        text += "subsection Mindlin\n  set Check multigrid = true\nend\n"
+        text += ("subsection Mindlin\n  subsection Linear solver\n"
+                 "    set Check multigrid = true\n  end\nend\n")
     s, _ = run(args, tag, text)
     exact = -Q * (kappa + 1. / R)
     for c in s["cycles"]:

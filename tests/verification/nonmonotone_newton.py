@@ -33,7 +33,8 @@ def prm_from(name, replacements, window):
 
 mindlin_changes = [("Number of cycles", "5"), ("Subdivisions", "10, 10"),
                    ("Membrane unknowns", "auto\n  set Contact quadrature points = 2\n"
-                    "  set Contact quadrature rule = lobatto\n  set Linear solver = multigrid")]
+                    "  set Contact quadrature rule = lobatto"
+                    "\n  subsection Linear solver\n    set Type = multigrid\n  end")]
 elasticity_changes = [("Number of cycles", "2"), ("Subdivisions", "8, 8, 1"),
                       ("Tolerance", "1e-6"),
                       ("Refine through thickness", "false\n  set Contact quadrature rule = lobatto"),

@@ -10,6 +10,11 @@
 // (Kirchhoff limit phi = -grad w) and, when friction is on, the membrane
 // displacements ubar = (u_x, u_y); all are continuous Q1 on a uniform
 // Cartesian mesh of the mid-plane [0,Lx]x[0,Ly].
+//
+// The implementation, in source/models/mindlin/: mindlin_model.cc (set-up,
+// mesh, cycles), parameters.cc, elements.cc (the MITC shear and the cell
+// data), assembly.cc, linear_solver.cc (direct solver and multigrid),
+// postprocessing.cc and output.cc.
 #ifndef nitsche_contact_models_mindlin_h
 #define nitsche_contact_models_mindlin_h
 
@@ -190,7 +195,7 @@ namespace NitscheContact
       mitc9
     };
 
-    /// Settings of the "Mindlin" subsection.
+    /// Settings of the "Mindlin" subsection (parameters.cc).
     struct Settings
     {
       double       shear_factor = 5. / 6.;
@@ -200,12 +205,18 @@ namespace NitscheContact
       bool         nitsche_length_is_thickness = true;
       unsigned int contact_quadrature          = 4;
       std::string  contact_rule                = "gauss";
+      /// the solver in use: 'multigrid', or the direct solver of
+      /// 'Linear solver/Type = direct' ('Direct solver')
       std::string  linear_solver               = "Amesos_Mumps";
       std::string  membrane_setting            = "auto";
-      /// 'Linear solver = multigrid'
+      /// 'Linear solver/Type = multigrid'
       bool         multigrid        = false;
       double       krylov_tolerance = 1e-9;
       bool         check_multigrid  = false;
+      /// 'Linear solver/Reuse factorization' and 'Symmetric
+      /// factorization' of the direct solver
+      bool         reuse_factorization     = true;
+      bool         symmetric_factorization = true;
       /// 'Obstacle compliance kappa' >= 0 (0: rigid obstacle)
       double       obstacle_compliance = 0.;
       /// no warnings on the console (a plate solved inside another model,
@@ -241,22 +252,101 @@ namespace NitscheContact
                  Shear                           shear);
 
   private:
+    /// Read the "Mindlin" subsection (parameters.cc); needs the friction
+    /// coefficient for 'Membrane unknowns = auto'.
+    static Settings
+    read_settings(dealii::ParameterHandler &prm,
+                  const CommonParameters   &common);
+
+    // Mesh, unknowns and edge conditions (mindlin_model.cc).
     void
     make_grid();
     void
     setup_dofs();
-    void
-    precompute_cell_data();
-    void
-    assemble_constant_part();
     double
     energy_norm(const dealii::Vector<double> &v) const;
-    /// 'Linear solver = multigrid', per mesh: the BFS levels on the mesh
-    /// coarsened once and the MITC4 level on top (after setup_dofs()).
+
+    // The cell-independent element data (elements.cc).
+    void
+    precompute_cell_data();
+    /// The bulk stiffness of one cell and the strains of every shape
+    /// function at its Gauss points.
+    void
+    precompute_bulk_data();
+    /// The linearised bottom-face quantities of every shape function at
+    /// every contact point, and the theta-term matrices.
+    void
+    precompute_contact_data();
+    /// The gap at every contact point of the mesh.
+    void
+    compute_gaps();
+    /// Kernel input at contact point q of a cell with local values u.
+    PointInput
+    point_input(const dealii::Vector<double> &u,
+                unsigned int                  q,
+                double                        gap) const;
+
+    // Assembly (assembly.cc).
+    /// What one assemble() computes at the contact points, shared by the
+    /// cells of the pass.
+    struct AssemblyPass
+    {
+      NonlinearScheme scheme;
+      bool            with_energy;
+      /// record q of every point ('Stick step on slip reversal')
+      bool            track_q;
+      /// compare q with the last assembly with a matrix
+      bool            compare_q;
+      std::vector<unsigned char>        status; ///< [cell*nq + q]
+      std::vector<dealii::Tensor<1, 3>> qs;     ///< [cell*nq + q]
+      unsigned long                     n_reversed = 0;
+    };
+    /// Work arrays of assemble_cell().
+    struct CellScratch
+    {
+      explicit CellScratch(unsigned int n);
+      std::vector<dealii::types::global_dof_index> dofs;
+      dealii::Vector<double> u, residual, tmp, point_law, point_branch;
+      dealii::FullMatrix<double> matrix;
+    };
+    void
+    assemble_constant_part();
+    /// Residual, contact energy and point status of cell c (into
+    /// cell_residuals, cell_energies and pass.status) and, with
+    /// build_matrix, its matrix into system_matrix.
+    void
+    assemble_cell(std::size_t   c,
+                  AssemblyPass &pass,
+                  CellScratch  &scratch,
+                  bool          build_matrix);
+    /// Add the cell residuals to `residual` in cell order; returns the sum
+    /// of the cell contact energies.
+    double
+    add_cell_residuals();
+
+    // Linear solvers (linear_solver.cc).
+    /// 'Linear solver/Type = multigrid', per mesh: the BFS levels on the
+    /// mesh coarsened once and the MITC4 level on top (after setup_dofs()).
     void
     setup_multigrid();
-    /// 'Linear solver = multigrid', per cycle: the cell matrices of the
-    /// finest BFS level, P_pos^T M P_pos of the MITC4 cell matrices M
+    /// The BFS dofs (4 per vertex of the mesh coarsened once) that the
+    /// edge conditions constrain.
+    std::vector<bool>
+    coarse_constraints() const;
+    /// Values (component 0) and rotations -grad (components 1, 2) of the
+    /// 16 BFS basis functions of a coarse cell at its 3 x 3 points
+    /// (0.5 i, 0.5 j), the vertices of its four children.
+    using ChildVertexBasis =
+      std::array<std::array<std::array<double, 16>, 3>, 9>;
+    ChildVertexBasis
+    child_vertex_basis() const;
+    /// The MITC4 level of the multigrid: its structured numbering and the
+    /// global prolongation from the finest BFS level.
+    void
+    setup_multigrid_top_level(const ChildVertexBasis  &basis,
+                              const std::vector<bool> &coarse_constrained);
+    /// 'Linear solver/Type = multigrid', per cycle: the cell matrices of
+    /// the finest BFS level, P_pos^T M P_pos of the MITC4 cell matrices M
     /// (after precompute_cell_data()).
     void
     setup_multigrid_matrices();
@@ -268,14 +358,30 @@ namespace NitscheContact
     /// Newton matrix (and check it if asked).
     void
     update_multigrid() const;
+
+    // Postprocessing (postprocessing.cc).
     /// The cell containing p (Cartesian index lookup), or end().
     dealii::DoFHandler<2>::active_cell_iterator
     locate(const dealii::Point<2> &p, dealii::Point<2> &unit_point) const;
-    /// Kernel input at contact point q of a cell with local values u.
-    PointInput
-    point_input(const dealii::Vector<double> &u,
-                unsigned int                  q,
-                double                        gap) const;
+    /// |R| of the accepted iterate relative to max(|A U|, |F|); stops or
+    /// warns when it is large.
+    double
+    check_accepted_residual() const;
+    /// Sums and maxima over the contact points of the accepted iterate.
+    struct ContactStatistics
+    {
+      double               area = 0., force = 0., tangential_force = 0.;
+      dealii::Tensor<1, 3> tangential_resultant;
+      double               max_ratio = 0., max_slip = 0., max_membrane = 0.,
+             max_contact_slip = 0.;
+      unsigned long n_stick = 0, n_slip = 0;
+    };
+    ContactStatistics
+    contact_statistics() const;
+    /// L2 and H1 errors of w and phi against 'Reference solution/Exact
+    /// solution'.
+    std::vector<std::pair<std::string, double>>
+    solution_errors() const;
 
     const CommonParameters &prm;
     MPI_Comm                comm;
@@ -322,7 +428,7 @@ namespace NitscheContact
     dealii::TrilinosWrappers::SparseMatrix constant_matrix;
     dealii::TrilinosWrappers::SparseMatrix system_matrix;
     ReusedFactorization                    direct_solver;
-    /// 'Linear solver = multigrid': the Kirchhoff (BFS) multigrid with the
+    /// 'Linear solver/Type = multigrid': the Kirchhoff (BFS) multigrid with the
     /// MITC4 plate as its extra finest level
     std::unique_ptr<FE_BicubicHermite<2>>  bfs; // (used by multigrid)
     std::unique_ptr<HermiteMultigrid>      multigrid;

@@ -1,0 +1,349 @@
+// Assembly: the constant part of the Newton matrix and the load once per
+// cycle, the residual, contact status and Newton matrix at every iterate,
+// and the potential energy and its slope along the Newton step.
+#include <deal.II/base/parallel.h>
+
+#include <nitsche_contact/models/mindlin/mindlin_model.h>
+
+#include <cmath>
+#include <limits>
+
+namespace NitscheContact
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// FNV-1a hash of the status field (cycle detection in the driver).
+    std::uint64_t
+    hash_status(const std::vector<unsigned char> &status)
+    {
+      std::uint64_t h = 1469598103934665603ULL;
+      for (const unsigned char c : status)
+        {
+          h ^= c;
+          h *= 1099511628211ULL;
+        }
+      return h;
+    }
+  } // namespace
+
+
+
+  void
+  MindlinModel::assemble_constant_part()
+  {
+    // Constant matrix: bulk stiffness + theta-terms at all contact points;
+    // load vector with (p+1)x(p+1) Gauss (exact for loads in Q_p). (Called after
+    // precompute_cell_data(), which holds the theta-terms per point.)
+    constant_part_stale = false;
+    if (assembled_matrix)
+      constant_matrix = 0.;
+    load = 0.;
+    const unsigned int n = fe.n_dofs_per_cell();
+    std::vector<types::global_dof_index> dofs(n);
+    Vector<double>                       cell_load(n);
+    const QGauss<2>                      q2(fe.degree + 1);
+    std::vector<std::vector<double>>     values(q2.size(),
+                                            std::vector<double>(n));
+    for (unsigned int q = 0; q < q2.size(); ++q)
+      for (unsigned int i = 0; i < n; ++i)
+        values[q][i] = fe.system_to_component_index(i).first == w_component ?
+                         fe.shape_value(i, q2.point(q)) :
+                         0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        cell_load = 0.;
+        const Point<2> v0 = cell->vertex(0);
+        for (unsigned int q = 0; q < q2.size(); ++q)
+          {
+            const Point<2> x(v0[0] + q2.point(q)[0] * hx,
+                             v0[1] + q2.point(q)[1] * hy);
+            const double   value = load_function->value(x);
+            if (!std::isfinite(value))
+              non_finite_at_point("Load/Transverse load",
+                                  prm.load_expression, value, x);
+            const double f = value * q2.weight(q) * hx * hy;
+            for (unsigned int i = 0; i < n; ++i)
+              cell_load(i) += f * values[q][i];
+          }
+        if (assembled_matrix)
+          constraints.distribute_local_to_global(constant_cell_matrix,
+                                                 cell_load,
+                                                 dofs,
+                                                 constant_matrix,
+                                                 load);
+        else
+          constraints.distribute_local_to_global(cell_load, dofs, load);
+      }
+    if (assembled_matrix)
+      constant_matrix.compress(VectorOperation::add);
+  }
+
+
+
+
+
+  MindlinModel::CellScratch::CellScratch(const unsigned int n)
+    : dofs(n)
+    , u(n)
+    , residual(n)
+    , tmp(n)
+    , point_law(n)
+    , point_branch(n)
+    , matrix(n, n)
+  {}
+
+
+
+  ContactCounts
+  MindlinModel::assemble(const NonlinearScheme scheme, const bool with_matrix)
+  {
+    if (constant_part_stale)
+      {
+        precompute_cell_data();
+        assemble_constant_part();
+      }
+    ContactCounts      counts;
+    const unsigned int n = fe.n_dofs_per_cell();
+
+    // (with the multigrid the Newton matrix is applied from its cell
+    // matrices and assembled only to check it)
+    const bool build_matrix = with_matrix && assembled_matrix;
+    if (build_matrix)
+      system_matrix.copy_from(constant_matrix);
+    residual = 0.;
+
+    AssemblyPass pass;
+    pass.scheme      = scheme;
+    pass.with_energy = has_energy();
+    pass.status.resize(previous_status.size());
+    // 'Stick step on slip reversal' (see the 3D model): only on the serial
+    // path that builds the matrix
+    pass.track_q   = build_matrix && friction > 0. &&
+                   scheme == NonlinearScheme::newton && prm.stick_on_reversal;
+    pass.compare_q = pass.track_q && previous_q.size() == pass.status.size();
+    pass.qs.resize(pass.track_q ? pass.status.size() : 0);
+    if (build_matrix)
+      step_correction.reinit(residual.size());
+
+    // Per cell: its residual (bulk, theta-terms and contact kernel), its
+    // contact energy, the status of its points and, when the matrix is
+    // assembled, its matrix. In parallel over cells (deal.II threads) when
+    // no matrix is assembled (the multigrid applies it from the cell
+    // matrices); the cell residuals are then added in cell order, so the
+    // result does not depend on the number of threads.
+    const std::size_t n_cells = cell_grid.size();
+    cell_residuals.resize(n * n_cells);
+    cell_energies.resize(n_cells);
+    if (build_matrix)
+      {
+        CellScratch scratch(n);
+        for (std::size_t c = 0; c < n_cells; ++c)
+          assemble_cell(c, pass, scratch, true);
+      }
+    else
+      parallel::apply_to_subranges(
+        std::size_t(0),
+        n_cells,
+        [&](const std::size_t begin, const std::size_t end) {
+          CellScratch scratch(n);
+          for (std::size_t c = begin; c < end; ++c)
+            assemble_cell(c, pass, scratch, false);
+        },
+        64);
+    const double contact_energy = add_cell_residuals();
+    if (build_matrix)
+      {
+        counts.n_reversed = pass.n_reversed;
+        system_matrix.compress(VectorOperation::add);
+      }
+    residual.add(load_factor, load);
+
+    for (std::size_t k = 0; k < pass.status.size(); ++k)
+      {
+        const unsigned char st = pass.status[k];
+        ++counts.n_points;
+        if (st != previous_status[k])
+          ++counts.n_changed;
+        if (st == static_cast<unsigned char>(PointStatus::inactive))
+          continue;
+        ++counts.n_active;
+        if (st == static_cast<unsigned char>(PointStatus::slip))
+          ++counts.n_slip;
+        else
+          ++counts.n_stick;
+      }
+    counts.hash          = hash_status(pass.status);
+    counts.residual_norm = residual.l2_norm();
+    last_contact_energy  = pass.with_energy ?
+                             contact_energy :
+                             std::numeric_limits<double>::quiet_NaN();
+    if (with_matrix)
+      {
+        previous_status.swap(pass.status);
+        previous_q.swap(pass.qs);
+        last_changed  = counts.n_changed + counts.n_reversed;
+        last_reversed = counts.n_reversed;
+      }
+    return counts;
+  }
+
+
+
+  void
+  MindlinModel::assemble_cell(const std::size_t c,
+                              AssemblyPass     &pass,
+                              CellScratch      &scratch,
+                              const bool        build_matrix)
+  {
+    const unsigned int  n      = fe.n_dofs_per_cell();
+    const unsigned int  nq     = contact_quadrature.size();
+    FullMatrix<double> *matrix = build_matrix ? &scratch.matrix : nullptr;
+    const auto         &cell   = cell_grid[c];
+    cell->get_dof_indices(scratch.dofs);
+    for (unsigned int i = 0; i < n; ++i)
+      scratch.u(i) = solution(scratch.dofs[i]);
+    // Constant part: (bulk + theta-terms) U.
+    constant_cell_matrix.vmult(scratch.residual, scratch.u);
+    bool   any_active = false;
+    double energy     = 0.;
+    for (unsigned int q = 0; q < nq; ++q)
+      {
+        const std::size_t k  = c * nq + q;
+        const PointInput  in = point_input(scratch.u, q, gaps[k]);
+        const PointState  st = evaluate_contact_point(in, pass.scheme);
+        pass.status[k]       = static_cast<unsigned char>(st.status);
+        if (pass.track_q)
+          pass.qs[k] = st.q;
+        if (pass.with_energy)
+          energy += contact_energy_density(in, st) * contact_JxW[q];
+        if (st.status == PointStatus::inactive)
+          continue;
+        if (!any_active && matrix)
+          *matrix = 0.;
+        any_active = true;
+        // Full kernel contribution instead of the theta-terms already
+        // contained in the constant part.
+        if (pass.compare_q &&
+            slip_reversed(st, previous_q[k],
+                          static_cast<PointStatus>(previous_status[k])))
+          {
+            // the law's residual, the stick branch's matrix, and the
+            // difference of the two residuals for the step
+            ++pass.n_reversed;
+            scratch.point_law    = 0.;
+            scratch.point_branch = 0.;
+            add_point_contribution(in, st, contact_shapes[q],
+                                   contact_JxW[q], nullptr, scratch.point_law);
+            add_point_contribution(in, stick_branch(in, st),
+                                   contact_shapes[q], contact_JxW[q],
+                                   matrix, scratch.point_branch);
+            scratch.residual += scratch.point_law;
+            scratch.point_branch -= scratch.point_law;
+            scratch.point_branch *= -1.; // -(R_branch - R)
+            constraints.distribute_local_to_global(scratch.point_branch,
+                                                   scratch.dofs,
+                                                   step_correction);
+          }
+        else
+          add_point_contribution(in,
+                                 st,
+                                 contact_shapes[q],
+                                 contact_JxW[q],
+                                 matrix,
+                                 scratch.residual);
+        theta_matrices[q].vmult(scratch.tmp, scratch.u);
+        scratch.residual -= scratch.tmp;
+        if (matrix)
+          matrix->add(-1., theta_matrices[q]);
+      }
+    cell_energies[c] = energy;
+    for (unsigned int i = 0; i < n; ++i)
+      cell_residuals[n * c + i] = -scratch.residual(i);
+    if (matrix && any_active)
+      constraints.distribute_local_to_global(*matrix,
+                                             scratch.dofs,
+                                             system_matrix);
+  }
+
+
+
+  double
+  MindlinModel::add_cell_residuals()
+  {
+    const unsigned int                   n = fe.n_dofs_per_cell();
+    std::vector<types::global_dof_index> dofs(n);
+    double                               contact_energy = 0.;
+    for (std::size_t c = 0; c < cell_grid.size(); ++c)
+      {
+        cell_grid[c]->get_dof_indices(dofs);
+        constraints.distribute_local_to_global(cell_residuals.begin() + n * c,
+                                               cell_residuals.begin() +
+                                                 n * (c + 1),
+                                               dofs.begin(),
+                                               residual);
+        contact_energy += cell_energies[c];
+      }
+    return contact_energy;
+  }
+
+
+
+  double
+  MindlinModel::energy_slope() const
+  {
+    if (!has_energy())
+      return std::numeric_limits<double>::quiet_NaN();
+    // `residual` holds -R(U) (condensed), `increment` the last Newton correction
+    return -(residual * increment);
+  }
+
+
+
+  double
+  MindlinModel::energy() const
+  {
+    if (!has_energy())
+      return std::numeric_limits<double>::quiet_NaN();
+    // 1/2 a(U,U) from the strains at the Gauss points (no cancellation
+    // between the large shear entries of the stiffness matrix, whose
+    // contribution is small for a thin plate), minus the load work, plus
+    // the contact energy of the last assemble() (theta = 1 kernel terms,
+    // including -(1/(2r)) sigma_n^2 at inactive points).
+    const unsigned int n  = fe.n_dofs_per_cell();
+    const double       nu = prm.poisson_ratio, E = prm.youngs_modulus,
+                 t = prm.thickness;
+    const double D  = prm.bending_stiffness();
+    const double S  = settings.shear_factor * mu * t;
+    const double Dm = E * t / (1. - nu * nu);
+    std::vector<types::global_dof_index> dofs(n);
+    std::vector<double>                  u(n);
+    double                               bulk = 0.;
+    for (const auto &cell : cell_grid)
+      {
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < n; ++i)
+          u[i] = solution(dofs[i]);
+        for (unsigned int q = 0; q < bulk_JxW.size(); ++q)
+          {
+            SymmetricTensor<2, 2> k, e;
+            Tensor<1, 2>          g;
+            for (unsigned int i = 0; i < n; ++i)
+              if (u[i] != 0.)
+                {
+                  k += u[i] * bulk_curvature[q][i];
+                  e += u[i] * bulk_membrane[q][i];
+                  g += u[i] * bulk_shear[q][i];
+                }
+            bulk += 0.5 *
+                    (D * ((1. - nu) * (k * k) + nu * trace(k) * trace(k)) +
+                     S * (g * g) +
+                     Dm * ((1. - nu) * (e * e) + nu * trace(e) * trace(e))) *
+                    bulk_JxW[q];
+          }
+      }
+    return bulk - load_factor * (load * solution) + last_contact_energy;
+  }
+} // namespace NitscheContact
