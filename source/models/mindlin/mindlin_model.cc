@@ -24,7 +24,18 @@ namespace NitscheContact
                              ParameterHandler       &parameters,
                              MPI_Comm                comm)
     : MindlinModel(common, read_settings(parameters, common), comm)
-  {}
+  {
+    // the checks of the common input that depend on the model (not for
+    // the 3D model's predictor, whose input the 3D model checks): a plate
+    // cell refines into 4, the Nitsche parameter is gamma0 E / t, and a
+    // compliant obstacle may lie above a supported edge
+    common.check_first_mesh_size(4);
+    common.check_magnitudes(common.gamma0 * common.youngs_modulus /
+                            common.thickness);
+    if (!(settings.obstacle_compliance > 0.))
+      common.check_obstacle_below_supported_edges(
+        common.obstacle_level_is_midplane ? 0. : -0.5 * common.thickness);
+  }
 
 
 
