@@ -1,6 +1,7 @@
 // The Kirchhoff model's results: contact area and force, extreme and probe
 // deflections, the contact points, and the errors against an exact
 // solution.
+#include <nitsche_contact/models/common/plate_postprocessing.h>
 #include <nitsche_contact/models/kirchhoff/kirchhoff_model.h>
 
 #include <algorithm>
@@ -29,17 +30,12 @@ namespace NitscheContact
                          unsigned int   &cell_index,
                          Point<2>       &unit) const
   {
-    const double tol = 1e-12 * std::max(prm.length_x, prm.length_y);
-    if (!(p[0] >= -tol && p[0] <= prm.length_x + tol && p[1] >= -tol &&
-          p[1] <= prm.length_y + tol))
+    const auto where =
+      UniformPlateGrid(nx, ny, prm.length_x, prm.length_y).locate(p);
+    if (!where)
       return false;
-    const unsigned int ix = std::min<unsigned int>(
-      nx - 1, static_cast<unsigned int>(std::max(0., p[0] / kit.h[0])));
-    const unsigned int iy = std::min<unsigned int>(
-      ny - 1, static_cast<unsigned int>(std::max(0., p[1] / kit.h[1])));
-    cell_index = ix + nx * iy;
-    unit = Point<2>((p[0] - ix * kit.h[0]) / kit.h[0],
-                    (p[1] - iy * kit.h[1]) / kit.h[1]);
+    cell_index = where->cell;
+    unit       = where->unit;
     return true;
   }
 
@@ -102,7 +98,7 @@ namespace NitscheContact
   {
     const unsigned int nq = quadrature.size();
     CycleResults       res;
-    double             max_penetration = -std::numeric_limits<double>::max();
+    ContactTotals      totals;
     double             load_total      = 0.;
     double             u[16];
     // Extreme deflections: at the vertices, edge midpoints and centre of
@@ -147,16 +143,12 @@ namespace NitscheContact
             const PointInput in = point_input(c, q, u);
             const PointState st =
               evaluate_contact_point(in, NonlinearScheme::newton);
-            const double p = -st.lambda_n; // contact pressure p_h >= 0
-            if (p > 0.)
-              res.contact_area += kit.JxW[q];
-            res.contact_force += p * kit.JxW[q];
+            totals.add(in, st, kit.JxW[q]);
             load_total += load_at(c, q) * kit.JxW[q];
-            // w - psi = -(u_n - g); penetration is psi - w > 0
-            if (ObstacleSurface::has_obstacle(in.gap))
-              max_penetration = std::max(max_penetration, in.u_n - in.gap);
           }
       }
+    res.contact_area  = totals.area();
+    res.contact_force = totals.force();
 
     res.probes = deflection_at(probes);
 
@@ -164,11 +156,7 @@ namespace NitscheContact
       compute_errors(res);
 
     // (null in summary.json where no obstacle lies below any point)
-    res.extra.emplace_back("max_penetration",
-                           max_penetration >
-                               -std::numeric_limits<double>::max() ?
-                             max_penetration :
-                             std::numeric_limits<double>::quiet_NaN());
+    res.extra.emplace_back("max_penetration", totals.max_penetration());
     res.extra.emplace_back("load_total", load_total);
     res.extra.emplace_back("r", kit.r);
     if (kit.inverse_constant > 0.)

@@ -6,6 +6,7 @@
 #include <deal.II/fe/fe_values_extractors.h>
 
 #include <nitsche_contact/nonlinear/stopping_rules.h>
+#include <nitsche_contact/models/common/plate_postprocessing.h>
 #include <nitsche_contact/models/mindlin/mindlin_model.h>
 
 #include <cmath>
@@ -119,6 +120,7 @@ namespace NitscheContact
     std::vector<types::global_dof_index> dofs(n);
     Vector<double>                       u(n);
     ContactStatistics                    s;
+    ContactTotals                        totals;
     for (unsigned int c = 0; c < cell_grid.size(); ++c)
       {
         const auto &cell = cell_grid[c];
@@ -146,10 +148,9 @@ namespace NitscheContact
                   }
                 s.max_membrane = std::max(s.max_membrane, ubar.norm());
               }
+            totals.add(in, st, JxW);
             if (st.lambda_n < 0.)
               {
-                s.area += JxW;
-                s.force += -st.lambda_n * JxW;
                 s.max_contact_slip = std::max(s.max_contact_slip, in.slip.norm());
                 if (st.status == PointStatus::slip)
                   ++s.n_slip;
@@ -167,6 +168,8 @@ namespace NitscheContact
               }
           }
       }
+    s.area  = totals.area();
+    s.force = totals.force();
     return s;
   }
 
@@ -236,19 +239,12 @@ namespace NitscheContact
   DoFHandler<2>::active_cell_iterator
   MindlinModel::locate(const Point<2> &p, Point<2> &unit_point) const
   {
-    const double tol = 1e-12 * std::max(prm.length_x, prm.length_y);
-    if (!(p[0] >= -tol && p[0] <= prm.length_x + tol && p[1] >= -tol &&
-          p[1] <= prm.length_y + tol))
+    const auto where =
+      UniformPlateGrid(nx, ny, prm.length_x, prm.length_y).locate(p);
+    if (!where)
       return dof_handler.end();
-    const unsigned int i =
-      std::min(static_cast<unsigned int>(std::max(p[0], 0.) / hx), nx - 1);
-    const unsigned int j =
-      std::min(static_cast<unsigned int>(std::max(p[1], 0.) / hy), ny - 1);
-    const auto &cell = cell_grid[static_cast<std::size_t>(j) * nx + i];
-    const Point<2> v0 = cell->vertex(0);
-    unit_point = Point<2>(std::min(std::max((p[0] - v0[0]) / hx, 0.), 1.),
-                          std::min(std::max((p[1] - v0[1]) / hy, 0.), 1.));
-    return cell;
+    unit_point = where->unit;
+    return cell_grid[where->cell];
   }
 
 

@@ -1,0 +1,88 @@
+// Postprocessing that the models share: where an in-plane point lies on a
+// plate model's uniform grid of cells, values at points, and the contact
+// area, force and penetration summed over the contact quadrature points.
+#ifndef nitsche_contact_models_common_plate_postprocessing_h
+#define nitsche_contact_models_common_plate_postprocessing_h
+
+#include <deal.II/base/point.h>
+
+#include <nitsche_contact/nitsche_kernel.h>
+
+#include <limits>
+#include <optional>
+#include <vector>
+
+namespace NitscheContact
+{
+  /// The uniform nx x ny grid of rectangular cells on [0, Lx] x [0, Ly] of
+  /// the plate models, cells numbered with x running fastest.
+  class UniformPlateGrid
+  {
+  public:
+    UniformPlateGrid() = default;
+    UniformPlateGrid(unsigned int nx,
+                     unsigned int ny,
+                     double       length_x,
+                     double       length_y);
+
+    /// A cell and the coordinates of a point in its unit cell.
+    struct Location
+    {
+      unsigned int     cell = 0;
+      dealii::Point<2> unit;
+    };
+
+    /// Where p lies; none outside the plate (beyond round-off of its size).
+    std::optional<Location>
+    locate(const dealii::Point<2> &p) const;
+
+    /// value(location) at each point, NaN at points outside the plate.
+    template <class Value>
+    std::vector<double>
+    values_at(const std::vector<dealii::Point<2>> &points,
+              const Value                         &value) const
+    {
+      std::vector<double> values(points.size(),
+                                 std::numeric_limits<double>::quiet_NaN());
+      for (unsigned int k = 0; k < points.size(); ++k)
+        if (const std::optional<Location> where = locate(points[k]))
+          values[k] = value(*where);
+      return values;
+    }
+
+  private:
+    unsigned int nx = 1, ny = 1;
+    double       length_x = 1., length_y = 1.;
+  };
+
+  /// Contact area and force (the integrals of the set where the pressure
+  /// p = -Lambda_n is positive and of p) and the largest penetration over
+  /// the contact quadrature points.
+  class ContactTotals
+  {
+  public:
+    void
+    add(const PointInput &in, const PointState &st, double JxW);
+
+    double
+    area() const
+    {
+      return contact_area;
+    }
+    double
+    force() const
+    {
+      return contact_force;
+    }
+    /// NaN where no obstacle lies below any point.
+    double
+    max_penetration() const;
+
+  private:
+    double contact_area  = 0.;
+    double contact_force = 0.;
+    double penetration   = -std::numeric_limits<double>::max();
+  };
+} // namespace NitscheContact
+
+#endif

@@ -1,0 +1,59 @@
+// Postprocessing that the models share (plate_postprocessing.h).
+#include <nitsche_contact/models/common/plate_postprocessing.h>
+#include <nitsche_contact/parameters.h>
+
+#include <algorithm>
+
+namespace NitscheContact
+{
+  UniformPlateGrid::UniformPlateGrid(const unsigned int nx,
+                                     const unsigned int ny,
+                                     const double       length_x,
+                                     const double       length_y)
+    : nx(nx)
+    , ny(ny)
+    , length_x(length_x)
+    , length_y(length_y)
+  {}
+
+  std::optional<UniformPlateGrid::Location>
+  UniformPlateGrid::locate(const dealii::Point<2> &p) const
+  {
+    const double tol = 1e-12 * std::max(length_x, length_y);
+    if (!(p[0] >= -tol && p[0] <= length_x + tol && p[1] >= -tol &&
+          p[1] <= length_y + tol))
+      return std::nullopt;
+    const double       hx = length_x / nx, hy = length_y / ny;
+    const unsigned int i =
+      std::min(nx - 1, static_cast<unsigned int>(std::max(0., p[0] / hx)));
+    const unsigned int j =
+      std::min(ny - 1, static_cast<unsigned int>(std::max(0., p[1] / hy)));
+    Location where;
+    where.cell = i + nx * j;
+    where.unit = dealii::Point<2>(std::clamp((p[0] - i * hx) / hx, 0., 1.),
+                                  std::clamp((p[1] - j * hy) / hy, 0., 1.));
+    return where;
+  }
+
+  void
+  ContactTotals::add(const PointInput &in, const PointState &st, const double JxW)
+  {
+    const double pressure = -st.lambda_n;
+    if (pressure > 0.)
+      {
+        contact_area += JxW;
+        contact_force += pressure * JxW;
+      }
+    // penetration psi - w = u_n - g where an obstacle lies below the point
+    if (ObstacleSurface::has_obstacle(in.gap))
+      penetration = std::max(penetration, in.u_n - in.gap);
+  }
+
+  double
+  ContactTotals::max_penetration() const
+  {
+    return penetration > -std::numeric_limits<double>::max() ?
+             penetration :
+             std::numeric_limits<double>::quiet_NaN();
+  }
+} // namespace NitscheContact
