@@ -77,13 +77,13 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 sed -e "s/^\( *set Number of cycles *=\).*/\1 $cycles/" \
     -e "s/^\( *set Subdivisions *=\).*/\1 $subdivisions, $subdivisions, 1/" \
-    -e "s/^\( *set Tolerance *=\).*/\1 1e-6\n  set Symmetric factorization = $symmetric/" \
+    -e "s/^\( *set Tolerance *=\).*/\1 1e-6/" \
     -e "s/^\( *set Nitsche gamma0 *=\).*/\1 $gamma0/" \
     -e "s/^\( *set Maximum iterations *=\).*/\1 300/" \
     -e "s|^\( *set Directory *=\).*|\1 $work/out|" \
     -e "s/^\( *set Format *=\).*/\1 none/" \
     -e "s/^\( *set Print timings *=\).*/\1 true/" \
-    -e "s/^\( *set Load applied as *=.*\)/\1\n  set Linear solver = $solver\n  set Krylov tolerance = $krylov/" \
+    -e "s/^\( *set Load applied as *=.*\)/\1\n  subsection Linear solver\n    set Type = $solver\n    set Krylov tolerance = $krylov\n    set Symmetric factorization = $symmetric\n  end/" \
     -e "s/^\( *set Refine through thickness *=\).*/\1 $through\n  set Contact quadrature rule = $rule\n  set Plate predictor = $predictor/" \
     "$here/parameters/paper_3d.prm" > "$work/bench.prm"
 run=("$exe")

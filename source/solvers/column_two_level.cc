@@ -86,7 +86,7 @@ namespace NitscheContact
         "Amesos_Mumps",
         true,
         true,
-        "(counted on a coarse matrix P^T A P of 'Linear solver = "
+        "(counted on a coarse matrix P^T A P of 'Linear solver/Type = "
         "two-level'; the Newton matrix A has at least as many) " +
           inertia_remedy};
     }
@@ -132,10 +132,20 @@ namespace NitscheContact
                              const TrilinosWrappers::SparseMatrix &A)
   {
     clear();
-    const MPI_Comm          comm     = dof_handler.get_communicator();
-    const FiniteElement<3> &fe       = dof_handler.get_fe();
-    const IndexSet         &owned    = dof_handler.locally_owned_dofs();
-    const IndexSet relevant = DoFTools::extract_locally_relevant_dofs(dof_handler);
+    const IndexSet relevant =
+      DoFTools::extract_locally_relevant_dofs(dof_handler);
+    check_mesh(dof_handler, constraints, relevant);
+    const ColumnNumbering numbering = number_columns(dof_handler);
+    map_matrix_columns(dof_handler, relevant, A, numbering);
+    make_coarse_matrices(dof_handler, A, numbering);
+  }
+
+  void
+  ColumnTwoLevel::check_mesh(const DoFHandler<3>             &dof_handler,
+                             const AffineConstraints<double> &constraints,
+                             const IndexSet                  &relevant)
+  {
+    const MPI_Comm comm = dof_handler.get_communicator();
 
     // The mesh: one cell through the thickness (faces 4 and 5, x3 = min
     // and max, on the boundary) and no hanging nodes.
@@ -156,12 +166,20 @@ namespace NitscheContact
     if (thick || hanging)
       throw InputError(
         "invalid value 'two-level' for parameter 'Elasticity/Linear "
-        "solver': it needs a mesh with one cell through the thickness and "
+        "solver/Type': it needs a mesh with one cell through the thickness and "
         "no hanging nodes, and this mesh has " +
         std::string(thick ? "more than one cell layer" : "hanging nodes") +
-        "; allowed: 'Linear solver = direct' or 'amg', or 'Subdivisions' "
+        "; allowed: 'Type = direct' or 'amg', or 'Subdivisions' "
         "with 1 in x3, 'Refine through thickness = false' and no "
         "'Refinement box'");
+  }
+
+  ColumnTwoLevel::ColumnNumbering
+  ColumnTwoLevel::number_columns(const DoFHandler<3> &dof_handler)
+  {
+    const MPI_Comm          comm  = dof_handler.get_communicator();
+    const FiniteElement<3> &fe    = dof_handler.get_fe();
+    const IndexSet         &owned = dof_handler.locally_owned_dofs();
 
     // Per DoF of a cell: the cell DoF that labels its column, the u3 DoF at
     // zeta = 0 (the bottom) with the same in-plane unit coordinates.
@@ -248,6 +266,21 @@ namespace NitscheContact
     for (std::size_t c = 0; c < n_local; ++c)
       column_inverse[c].reinit(column_start[c + 1] - column_start[c],
                                column_start[c + 1] - column_start[c]);
+    return {offset, n_local, n_global, std::move(position)};
+  }
+
+  void
+  ColumnTwoLevel::map_matrix_columns(
+    const DoFHandler<3>                  &dof_handler,
+    const IndexSet                       &relevant,
+    const TrilinosWrappers::SparseMatrix &A,
+    const ColumnNumbering                &numbering)
+  {
+    const MPI_Comm                   comm     = dof_handler.get_communicator();
+    const IndexSet                  &owned    = dof_handler.locally_owned_dofs();
+    const std::size_t                n_owned  = owned.n_elements();
+    const unsigned long long         offset   = numbering.offset;
+    const std::vector<unsigned int> &position = numbering.position;
 
     // Coarse numbers: bending 3 g + (0: w, 1: phi_1, 2: phi_2), membrane
     // 2 g + (0, 1), g the global column. The DoFs of ghost columns (A's
@@ -305,6 +338,21 @@ namespace NitscheContact
             col_position[k]     = position[p];
           }
       }
+  }
+
+  void
+  ColumnTwoLevel::make_coarse_matrices(
+    const DoFHandler<3>                  &dof_handler,
+    const TrilinosWrappers::SparseMatrix &A,
+    const ColumnNumbering                &numbering)
+  {
+    const MPI_Comm           comm     = dof_handler.get_communicator();
+    const IndexSet          &owned    = dof_handler.locally_owned_dofs();
+    const std::size_t        n_owned  = owned.n_elements();
+    const unsigned long long offset   = numbering.offset;
+    const unsigned long long n_local  = numbering.n_local;
+    const unsigned long long n_global = numbering.n_global;
+    const Epetra_CrsMatrix  &a        = A.trilinos_matrix();
 
     // the coarse patterns
     IndexSet bending_owned(3 * n_global), membrane_owned(2 * n_global);

@@ -38,17 +38,17 @@ CASES = [
     ("unknown top-level entry", "set Modell = elasticity", ["Modell"]),
     ("two-level solver, two cell layers",
      "subsection Geometry\n  set Subdivisions = 4, 4, 2\nend\n"
-     "subsection Elasticity\n  set Linear solver = two-level\nend",
-     ["Elasticity/Linear solver", "'two-level'", "one cell through the thickness", "2 cells in x3"]),
+     "subsection Elasticity\n  subsection Linear solver\n    set Type = two-level\n  end\nend",
+     ["Elasticity/Linear solver/Type", "'two-level'", "one cell through the thickness", "2 cells in x3"]),
     ("two-level solver, refinement through the thickness",
      "subsection Geometry\n  set Number of cycles = 2\nend\n"
-     "subsection Elasticity\n  set Linear solver = two-level\n"
+     "subsection Elasticity\n  subsection Linear solver\n    set Type = two-level\n  end\n"
      "  set Refine through thickness = true\nend",
-     ["Elasticity/Linear solver", "'two-level'", "Refine through thickness"]),
+     ["Elasticity/Linear solver/Type", "'two-level'", "Refine through thickness"]),
     ("two-level solver, hanging nodes",
-     "subsection Elasticity\n  set Linear solver = two-level\n"
+     "subsection Elasticity\n  subsection Linear solver\n    set Type = two-level\n  end\n"
      "  set Refinement box = 0, 0, -1; 1, 1, 1\n  set Local refinement steps = 1\nend",
-     ["Elasticity/Linear solver", "'two-level'", "hanging nodes", "Refinement box"]),
+     ["Elasticity/Linear solver/Type", "'two-level'", "hanging nodes", "Refinement box"]),
     ("E = 0", "subsection Material\n  set Young's modulus = 0\nend",
      ["Young's modulus", "'0'", "> 0"]),
     ("E < 0", "subsection Material\n  set Young's modulus = -2e5\nend",
@@ -123,8 +123,19 @@ CASES = [
      "subsection Load\n  set Transverse load = -0.02 + 0*sqrt((x-5.2641)^2 - 1e-6)\nend",
      ["Load/Transverse load", "quadrature point (5.264"]),
     ("elasticity Krylov tolerance = 0",
-     "subsection Elasticity\n  set Linear solver = amg\n  set Krylov tolerance = 0\nend",
-     ["Elasticity/Krylov tolerance", "'0'", "(0, 1)"]),
+     "subsection Elasticity\n  subsection Linear solver\n    set Type = amg\n"
+     "    set Krylov tolerance = 0\n  end\nend",
+     ["Elasticity/Linear solver/Krylov tolerance", "'0'", "(0, 1)"]),
+    ("moved entry 'Elasticity/Linear solver'",
+     "subsection Elasticity\n  set Linear solver = amg\nend",
+     ["Elasticity/Linear solver", "no longer exists", "'Type'"]),
+    ("moved entry 'Elasticity/Krylov tolerance'",
+     "subsection Elasticity\n  set Krylov tolerance = 1e-8\nend",
+     ["Elasticity/Krylov tolerance", "no longer exists", "'Elasticity/Linear solver'"]),
+    ("elasticity factorisation reuse not a bool",
+     "subsection Elasticity\n  subsection Linear solver\n"
+     "    set Reuse factorization = sometimes\n  end\nend",
+     ["Reuse factorization", "sometimes", "Bool"]),
     ("load constant named like a variable",
      "subsection Load\n  set Function constants = x=1\nend",
      ["Load/Function constants", "x=1", "'x' is not"]),

@@ -390,7 +390,7 @@ namespace
             "  set Friction coefficient = 0.5\nend\n"
             "subsection Elasticity\n  set Polynomial degree = " +
             std::to_string(degree) +
-            "\n  set Linear solver = direct\nend\n"
+            "\n  subsection Linear solver\n    set Type = direct\n  end\nend\n"
             "subsection Output\n  set Format = none\n"
             "  set Directory = output-dir\nend\n");
           ElasticityModel &model = made.model;

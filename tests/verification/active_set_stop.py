@@ -71,7 +71,8 @@ mindlin_mg = [("Number of cycles", "4"),
               ("Membrane unknowns", "auto\n  subsection Linear solver\n    set Type = multigrid\n  end\n"
                "  set Contact quadrature points = 2\n"
                "  set Contact quadrature rule = lobatto")]
-two_level = [(e, v + "\n  set Linear solver = two-level\n  set Krylov tolerance = 1e-8"
+two_level = [(e, v + "\n  subsection Linear solver\n    set Type = two-level\n"
+              "    set Krylov tolerance = 1e-8\n  end"
               if e == "Refine through thickness" else v) for e, v in elasticity]
 compliant_mg = [("Number of cycles", "5"),
                 ("Membrane unknowns", "auto\n  subsection Linear solver\n    set Type = multigrid\n  end\n"

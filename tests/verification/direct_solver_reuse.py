@@ -1,7 +1,6 @@
 """The sparse direct solver's kept factorisation
 (include/nitsche_contact/solvers/reused_factorization.h) against factorising every
-Newton matrix ('Nonlinear solver/Reuse factorization = false', for the
-models' '<Model>/Linear solver/Reuse factorization = false'), the second
+Newton matrix ('<Model>/Linear solver/Reuse factorization = false'), the second
 linear-algebra path of the program:
  - without friction a Newton matrix whose contact status did not change is
    bitwise the factorised one, and the kept factors give exactly the
@@ -32,6 +31,8 @@ KLU = ("subsection Kirchhoff\n  subsection Linear solver\n"
        "    set Direct solver = Amesos_Klu\n  end\nend\n")
 MINDLIN_NO_REUSE = ("subsection Mindlin\n  subsection Linear solver\n"
                     "    set Reuse factorization = false\n  end\nend\n")
+NO_REUSE_3D = ("subsection Elasticity\n  subsection Linear solver\n"
+               "    set Reuse factorization = false\n  end\nend\n")
 here = os.path.dirname(os.path.abspath(__file__))
 paper_mindlin = open(os.path.join(here, "..", "..", "parameters", "paper_mindlin.prm")).read()
 
@@ -106,6 +107,6 @@ for friction in (0, 0.3):
     text = sphere + "\nsubsection Contact\n  set Friction coefficient = %g\nend\n" % friction
     tag = "3D sphere, 2 ranks, F %g" % friction
     kept, _ = run(args, "sphere_F%g" % friction, text, np=2)
-    fresh, _ = run(args, "sphere_F%g_no_reuse" % friction, text + NO_REUSE, np=2)
+    fresh, _ = run(args, "sphere_F%g_no_reuse" % friction, text + NO_REUSE_3D, np=2)
     compare(tag, kept, fresh, 1e-13 if friction == 0 else 1e-8, friction == 0)
 finish()

@@ -1,4 +1,4 @@
-"""Issue 2, linear solver choice of the 3D model: 'Linear solver = amg'
+"""Issue 2, linear solver choice of the 3D model: 'Linear solver/Type = amg'
 (GMRES preconditioned by Trilinos ML) must give the same solution as the
 direct solver (MUMPS), the second method, where AMG works, and a clear
 error where it does not.
@@ -23,9 +23,9 @@ sphere = open(os.path.join(root, "tests", "runs", "elasticity_sphere.prm")).read
 
 direct, _ = run(args, "sphere_direct", sphere, np=2)
 amg, log = run(args, "sphere_amg", sphere +
-               "\nsubsection Elasticity\n  set Linear solver = amg\nend\n", np=2)
+               "\nsubsection Elasticity\n  subsection Linear solver\n    set Type = amg\n  end\nend\n", np=2)
 check(amg["parameters"]["linear solver"] == "amg" and direct["parameters"]["linear solver"] == "direct",
-      "the runs used 'Linear solver = amg' and 'direct'")
+      "the runs used 'Linear solver/Type = amg' and 'direct'")
 for a, b in zip(direct["cycles"], amg["cycles"]):
     c = "cycle %d: " % a["cycle"]
     check(a["converged"] and b["converged"], c + "both converged")
@@ -45,10 +45,10 @@ check(last["linear_iterations"] >= 3 * last["nonlinear_iterations"],
 
 plate = open(os.path.join(root, "parameters", "paper_3d.prm")).read()
 plate += ("\nsubsection Geometry\n  set Number of cycles = 1\nend\n"
-          "subsection Elasticity\n  set Linear solver = amg\nend\n")
+          "subsection Elasticity\n  subsection Linear solver\n    set Type = amg\n  end\nend\n")
 _, log = run(args, "paper_3d_amg", plate, np=2, expect_status=2)
-check("AMG-preconditioned GMRES" in log and "'Elasticity/Krylov tolerance'" in log
-      and "use 'Linear solver = direct'" in log,
+check("AMG-preconditioned GMRES" in log and "'Elasticity/Linear solver/Krylov tolerance'" in log
+      and "use 'Linear solver/Type = direct'" in log,
       "thin plate: the AMG failure is reported with the solver, the entry and the remedy")
 check("internal error" not in log, "thin plate: not reported as an internal error")
 check(log.count("nitsche-contact: error:") == 1, "thin plate: the message is printed once (rank 0)")

@@ -1,4 +1,4 @@
-"""Issue 2: 'Elasticity/Linear solver = two-level' (GMRES preconditioned by
+"""Issue 2: 'Elasticity/Linear solver/Type = two-level' (GMRES preconditioned by
 column block Jacobi and a coarse space of plate kinematics, doc/design.md)
 against the direct solver, a second method of the program: the same Newton
 problems, so the same converged solutions (both stop at |dU|_a <= 1e-6
@@ -29,8 +29,9 @@ params = os.path.join(here, "..", "..", "parameters")
 
 
 def two_level(text):
-    return text + ("\nsubsection Elasticity\n  set Linear solver = two-level\n"
-                   "  set Krylov tolerance = 1e-8\nend\n")
+    return text + ("\nsubsection Elasticity\n  subsection Linear solver\n"
+                   "    set Type = two-level\n    set Krylov tolerance = 1e-8\n"
+                   "  end\nend\n")
 
 
 def same(a, b, what, tangential=False):

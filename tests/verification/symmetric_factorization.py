@@ -1,6 +1,5 @@
-"""The L D L^T factorisation of symmetric Newton matrices ('Nonlinear
-solver/Symmetric factorization = true', for the Kirchhoff model 'Kirchhoff/
-Linear solver/Symmetric factorization = true', MUMPS called directly with SYM = 2)
+"""The L D L^T factorisation of symmetric Newton matrices ('<Model>/Linear
+solver/Symmetric factorization = true', MUMPS called directly with SYM = 2)
 against the LU that Amesos offers (= false), a second method of the program:
 on the paper's 3D test (Q2, 3x3 Gauss-Lobatto contact points, 8x8x1 ->
 16x16x1) and on the paper's Kirchhoff test (GSV, MUMPS) both reach the same
@@ -51,9 +50,11 @@ paper_3d = open(os.path.join(params, "paper_3d.prm")).read()
 def prm_3d(gamma0, symmetric):
     return edit(paper_3d, [("Number of cycles", "2"), ("Nitsche gamma0", str(gamma0)),
                            ("Contact quadrature points",
-                            "3\n  set Contact quadrature rule = lobatto"),
-                           ("Tolerance", "1e-6\n  set Symmetric factorization = %s"
-                            % ("true" if symmetric else "false"))], "paper_3d.prm")
+                            "3\n  set Contact quadrature rule = lobatto\n"
+                            "  subsection Linear solver\n"
+                            "    set Symmetric factorization = %s\n  end"
+                            % ("true" if symmetric else "false")),
+                           ("Tolerance", "1e-6")], "paper_3d.prm")
 
 
 ldlt, out = run(args, "3d_ldlt", prm_3d(60, True))

@@ -1,6 +1,6 @@
 // A two-level preconditioner for the 3D Newton matrices of a plate-like
 // body meshed with one cell through its thickness ('Elasticity/Linear
-// solver = two-level'). Every in-plane node carries a column of support
+// solver/Type = two-level'). Every in-plane node carries a column of support
 // points (3 for Q2, 2 for Q1) through the thickness; the preconditioner
 // combines
 // - a smoother: block Jacobi over these columns (9 x 9 blocks for Q2, each
@@ -137,6 +137,37 @@ namespace NitscheContact
 
     void
     smooth(const double *r, double *x) const;
+
+    /// The columns' global numbers (contiguous per rank: offset ...
+    /// offset + n_local - 1 of n_global), and per owned DoF its position in
+    /// its column.
+    struct ColumnNumbering
+    {
+      unsigned long long        offset, n_local, n_global;
+      std::vector<unsigned int> position;
+    };
+    /// InputError (on every rank) unless the mesh is one cell thick and has
+    /// no hanging nodes.
+    static void
+    check_mesh(const dealii::DoFHandler<3>             &dof_handler,
+               const dealii::AffineConstraints<double> &constraints,
+               const dealii::IndexSet                  &relevant);
+    /// The columns of the owned DoFs: dof_column, dof_component, dof_zeta,
+    /// column_start, column_dofs and the sizes of column_inverse.
+    ColumnNumbering
+    number_columns(const dealii::DoFHandler<3> &dof_handler);
+    /// The col_* maps of A's local columns (ghost columns included).
+    void
+    map_matrix_columns(const dealii::DoFHandler<3>                  &dof_handler,
+                       const dealii::IndexSet                       &relevant,
+                       const dealii::TrilinosWrappers::SparseMatrix &A,
+                       const ColumnNumbering                        &numbering);
+    /// The coarse matrices' patterns, where A's entries go in them, and the
+    /// vectors of the coarse problems.
+    void
+    make_coarse_matrices(const dealii::DoFHandler<3>                  &dof_handler,
+                         const dealii::TrilinosWrappers::SparseMatrix &A,
+                         const ColumnNumbering                        &numbering);
   };
 } // namespace NitscheContact
 

@@ -12,8 +12,10 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
 
 #include <nitsche_contact/solvers/column_two_level.h>
 #include <nitsche_contact/model.h>
@@ -21,7 +23,10 @@
 #include <nitsche_contact/parameters.h>
 #include <nitsche_contact/solvers/reused_factorization.h>
 
+#include <array>
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace NitscheContact
 {
@@ -34,6 +39,8 @@ namespace NitscheContact
                           public PredictedStart
   {
   public:
+    // The parameters (parameters.cc) and the construction
+    // (elasticity_model.cc).
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
@@ -41,6 +48,10 @@ namespace NitscheContact
                     dealii::ParameterHandler &prm,
                     MPI_Comm                  comm);
 
+    // The ContactModel interface and the abilities: set-up and norms in
+    // elasticity_model.cc, the predictor in plate_predictor.cc, assembly and
+    // energy in assembly.cc, the solve in linear_solver.cc, the results in
+    // postprocessing.cc and output.cc.
     ModelDescription
     describe() const override
     {
@@ -116,7 +127,7 @@ namespace NitscheContact
     bool
     last_solve_accurate() const override
     {
-      return linear_solver == "direct";
+      return linear_solver.type == "direct";
     }
     std::optional<double>
     estimated_correction() const override
@@ -175,6 +186,75 @@ namespace NitscheContact
     }
 
   private:
+    // --- Parameters (parameters.cc)
+
+    /// The 'Elasticity/Linear solver' subsection.
+    struct LinearSolverParameters
+    {
+      /// 'Type': direct, amg or two-level
+      std::string type;
+      double      krylov_tolerance;
+      bool        reuse_factorization;
+      bool        symmetric_factorization;
+    };
+    /// 'Elasticity/Polynomial degree' (the element is built before the
+    /// other entries are read)
+    static unsigned int
+    read_degree(dealii::ParameterHandler &prm);
+    static LinearSolverParameters
+    read_linear_solver_parameters(dealii::ParameterHandler &prm);
+    /// The 'Elasticity' subsection into the members below, with the checks
+    /// of single entries and of the mesh they describe.
+    void
+    read_parameters(dealii::ParameterHandler &prm);
+    /// 'Refinement box' as two corners (empty without a box).
+    static std::vector<dealii::Point<3>>
+    parse_refinement_box(const std::string &box);
+    /// InputError when the local refinement would make more than 1e7 cells.
+    void
+    check_local_refinement_size() const;
+    /// InputError when 'Type = two-level' meets a mesh with more than one
+    /// cell through the thickness or with hanging nodes.
+    void
+    check_two_level_mesh() const;
+    /// The load, the top traction and their checks against the top face.
+    void
+    make_load_functions();
+
+    const CommonParameters &prm;
+    MPI_Comm                comm;
+
+    // "Elasticity" subsection
+    unsigned int degree;
+    bool         load_as_traction;
+    bool         top_clamped;
+    std::string  tangential_traction;
+    std::vector<dealii::Point<3>> refinement_box;
+    unsigned int local_refinement_steps;
+    bool         refine_through_thickness;
+    bool         with_plate_predictor;
+    unsigned int contact_quadrature_points;
+    std::string  contact_rule_name;
+    /// contact_rule(contact_rule_name, contact_quadrature_points)
+    dealii::Quadrature<2> contact_face_quadrature;
+    /// "Elasticity/Linear solver" subsection
+    const LinearSolverParameters linear_solver;
+
+    // --- Set-up of a cycle and norms (elasticity_model.cc)
+
+    /// InputError when the obstacle height is not a finite number at a
+    /// contact point of this mesh.
+    void
+    check_obstacle_heights() const;
+    /// The warning when gamma0 is not above the coercivity bound of theta.
+    void
+    warn_below_coercivity_bound() const;
+    /// sqrt(v.Av) with the stiffness A, without the constrained entries
+    double
+    energy_norm(const dealii::TrilinosWrappers::MPI::Vector &v) const;
+
+    // --- Mesh, DoFs and constraints (mesh.cc)
+
     /// The mesh of a cycle, in the empty triangulation: the coarse box mesh
     /// ('Subdivisions', with the in-plane ones times 2^cycle unless 'Refine
     /// through thickness'), 'Initial refinement' global and the local
@@ -202,12 +282,94 @@ namespace NitscheContact
     /// which in-plane rigid motions are constrained: translation x1, x2,
     /// rotation about x3
     std::array<bool, 3> pinned_modes = {{false, false, false}};
+    /// every locally owned DoF once, with its support point and component
+    struct SupportPoint
+    {
+      dealii::types::global_dof_index dof;
+      dealii::Point<3>                point;
+      unsigned int                    component;
+    };
+    std::vector<SupportPoint>
+    owned_support_points() const;
+
+    dealii::parallel::distributed::Triangulation<3> triangulation;
+    dealii::FESystem<3>                             fe;
+    dealii::DoFHandler<3>                           dof_handler;
+    dealii::MappingQ<3>                             mapping;
+    dealii::IndexSet                                locally_owned, locally_relevant;
+    dealii::AffineConstraints<double>               constraints;
+
+
+    // --- Assembly (assembly.cc)
+
     /// Elastic stiffness and load; for theta != 0 also the constant
     /// matrix (the stiffness plus the theta-terms of every contact point).
     void
     assemble_bulk();
-    double
-    energy_norm(const dealii::TrilinosWrappers::MPI::Vector &v) const;
+    /// What assemble_bulk() records of the load for its checks: the
+    /// in-plane resultant, the moment about x3 (through the plate centre)
+    /// and their scale of the top tangential traction, and the first value
+    /// of the load or traction that is not a finite number on this rank.
+    struct LoadRecord
+    {
+      double in_plane[4]   = {0., 0., 0., 0.};
+      /// entry (1: load, 2: traction; 0: none), value, point
+      double non_finite[4] = {0., 0., 0., 0.};
+      void
+      note(double entry, double value, const dealii::Point<3> &x);
+    };
+    /// The cell's stiffness (symmetric, full) and body force into
+    /// cell_matrix and cell_rhs.
+    void
+    assemble_cell_bulk(dealii::FEValues<3>             &fv,
+                       const std::vector<unsigned int> &comp,
+                       dealii::FullMatrix<double>      &cell_matrix,
+                       dealii::Vector<double>          &cell_rhs,
+                       LoadRecord                      &record) const;
+    /// The top traction (and, for 'top traction', the load) of the cell's
+    /// top faces into cell_rhs.
+    void
+    assemble_cell_top_traction(
+      const dealii::DoFHandler<3>::active_cell_iterator &cell,
+      dealii::FEFaceValues<3>                           &fvf,
+      const std::vector<unsigned int>                   &comp,
+      dealii::Vector<double>                            &cell_rhs,
+      LoadRecord                                        &record) const;
+    /// InputError for a load that is not a finite number, or one that
+    /// loads a pinned in-plane rigid motion (collective).
+    void
+    check_load(LoadRecord &record) const;
+    /// theta_matrix from bulk_matrix and the theta-terms of the F in use
+    void
+    assemble_theta_matrix();
+    /// The kernel input at contact face point q of fvf (reinit'ed) from the
+    /// displacement and its gradient there, with the F in use.
+    PointInput
+    face_point_input(const dealii::FEFaceValues<3>           &fvf,
+                     unsigned int                             q,
+                     const dealii::Vector<double>            &u_value,
+                     const std::vector<dealii::Tensor<1, 3>> &u_gradient,
+                     double                                   r) const;
+    /// The contact contributions at the current iterate: of the active
+    /// points to system_matrix (with_matrix) and residual, the stick-branch
+    /// correction of reversed points to step_correction; the status of every
+    /// point (and its q where track_q) in order.
+    void
+    assemble_contact(NonlinearScheme             scheme,
+                     bool                        with_matrix,
+                     bool                        track_q,
+                     std::vector<unsigned char> &status,
+                     std::vector<dealii::Tensor<1, 3>> &qs,
+                     ContactCounts              &counts,
+                     double                     &contact_energy);
+    /// The point counts of `status` (summed over the ranks), the status
+    /// changes against the previous matrix, which status and q it keeps
+    /// (with_matrix).
+    void
+    count_contact_points(const std::vector<unsigned char> &status,
+                         std::vector<dealii::Tensor<1, 3>> &qs,
+                         bool                              with_matrix,
+                         ContactCounts                    &counts);
     /// work(cell, f, r) for every contact face f of the locally owned
     /// cells, after fvf.reinit(cell, f); r is the face's Nitsche parameter.
     template <typename FaceWork>
@@ -229,64 +391,7 @@ namespace NitscheContact
     /// theta is coercive for gamma0 > (1+theta)^2/4 C_n.
     double
     trace_constant() const;
-    /// theta_matrix from bulk_matrix and the theta-terms of the F in use
-    void
-    assemble_theta_matrix();
-    /// The kernel input at contact face point q of fvf (reinit'ed) from the
-    /// displacement and its gradient there, with the F in use.
-    PointInput
-    face_point_input(const dealii::FEFaceValues<3>           &fvf,
-                     unsigned int                             q,
-                     const dealii::Vector<double>            &u_value,
-                     const std::vector<dealii::Tensor<1, 3>> &u_gradient,
-                     double                                   r) const;
     double trace_constant_value = 0.;
-
-    /// 'Plate predictor': build the Mindlin plate on the in-plane nodes
-    /// (its parameters in plate_prm), and lift its solution to the start U
-    void
-    make_plate_predictor();
-    /// every locally owned DoF once, with its support point and component
-    struct SupportPoint
-    {
-      dealii::types::global_dof_index dof;
-      dealii::Point<3>                point;
-      unsigned int                    component;
-    };
-    std::vector<SupportPoint>
-    owned_support_points() const;
-    void
-    lift_plate_solution();
-
-    const CommonParameters &prm;
-    MPI_Comm                comm;
-    /// the plate predictor's parameters (it keeps a reference), the plate,
-    /// and the number of its cycles before the one of the first 3D mesh
-    CommonParameters              plate_prm;
-    std::unique_ptr<MindlinModel> plate;
-    unsigned int                  plate_pre_cycles = 0;
-
-    // "Elasticity" subsection
-    unsigned int degree;
-    bool         load_as_traction;
-    bool         top_clamped;
-    std::string  tangential_traction;
-    std::string  linear_solver;
-    double       krylov_tolerance;
-    std::vector<dealii::Point<3>> refinement_box;
-    unsigned int local_refinement_steps;
-    bool         refine_through_thickness;
-    unsigned int contact_quadrature_points;
-    std::string  contact_rule_name;
-    /// contact_rule(contact_rule_name, contact_quadrature_points)
-    dealii::Quadrature<2> contact_face_quadrature;
-
-    dealii::parallel::distributed::Triangulation<3> triangulation;
-    dealii::FESystem<3>                             fe;
-    dealii::DoFHandler<3>                           dof_handler;
-    dealii::MappingQ<3>                             mapping;
-    dealii::IndexSet                                locally_owned, locally_relevant;
-    dealii::AffineConstraints<double>               constraints;
 
     dealii::TrilinosWrappers::SparseMatrix bulk_matrix;   // elastic stiffness
     /// For theta != 0: bulk_matrix plus the theta-terms -(theta/r)
@@ -336,10 +441,48 @@ namespace NitscheContact
     /// friction switched on or off since theta_matrix was built
     bool                       theta_matrix_stale = false;
     double                     last_contact_energy = 0.;
-    double                     relative_residual   = 0.; ///< |R|/|AU| at postprocess
+
+    // --- Linear solvers (linear_solver.cc)
+
+    /// The settings of direct_solver from linear_solver.
+    ReusedFactorization::Settings
+    direct_solver_settings() const;
+    /// GMRES with the two-level preconditioner on K dU = rhs; its iterations.
+    unsigned int
+    solve_two_level(const dealii::TrilinosWrappers::MPI::Vector &rhs);
+    /// GMRES with the AMG preconditioner on K dU = rhs; its iterations.
+    unsigned int
+    solve_amg(const dealii::TrilinosWrappers::MPI::Vector &rhs);
     unsigned long last_changed = 0; ///< status changes of the last matrix
-    ReusedFactorization        direct_solver; ///< 'Linear solver = direct'
-    ColumnTwoLevel             two_level;     ///< 'Linear solver = two-level'
+    ReusedFactorization        direct_solver; ///< 'Type = direct'
+    ColumnTwoLevel             two_level;     ///< 'Type = two-level'
+
+    // --- Plate predictor (plate_predictor.cc)
+
+    /// 'Plate predictor': build the Mindlin plate on the in-plane nodes
+    /// (its parameters in plate_prm), and lift its solution to the start U
+    void
+    make_plate_predictor();
+    void
+    lift_plate_solution();
+    /// the plate predictor's parameters (it keeps a reference), the plate,
+    /// and the number of its cycles before the one of the first 3D mesh
+    CommonParameters              plate_prm;
+    std::unique_ptr<MindlinModel> plate;
+    unsigned int                  plate_pre_cycles = 0;
+
+    // --- Postprocessing (postprocessing.cc)
+
+    /// The equilibrium check of the accepted iterate: |R(U)| / |AU|.
+    double
+    equilibrium_residual() const;
+    /// The contact area, force and the extra results of the contact points.
+    void
+    add_contact_results(CycleResults &results) const;
+    /// The errors against 'Reference solution/Exact solution'.
+    std::vector<std::pair<std::string, double>>
+    errors() const;
+    double relative_residual = 0.; ///< |R|/|AU| at postprocess
   };
 } // namespace NitscheContact
 
