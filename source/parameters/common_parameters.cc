@@ -5,6 +5,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <nitsche_contact/model_registry.h>
+#include <nitsche_contact/moved_entries.h>
 #include <nitsche_contact/parameters.h>
 
 #include <algorithm>
@@ -219,12 +220,6 @@ namespace NitscheContact
                     "residual is unchanged.");
       declare_entry(prm, "Print iterations", "true", Patterns::Bool(),
                     "One log line per nonlinear iteration.");
-      declare_entry(prm, "Reuse factorization", "true", Patterns::Bool(),
-                    "Sparse direct solvers: reuse the last factorisation "
-                    "while no contact point changes status.");
-      declare_entry(prm, "Symmetric factorization", "true", Patterns::Bool(),
-                    "MUMPS: factorise symmetric Newton matrices as L D L^T "
-                    "and report negative eigenvalues; false uses LU.");
       prm.leave_subsection();
     }
 
@@ -282,6 +277,12 @@ namespace NitscheContact
   void
   CommonParameters::declare(ParameterHandler &prm)
   {
+    for (const std::string entry :
+         {"Reuse factorization", "Symmetric factorization"})
+      declare_moved_entry("Nonlinear solver/" + entry,
+                          "use '" + entry +
+                            "' in the subsection 'Linear solver' of the "
+                            "model's subsection");
     std::string models;
     for (const ModelRegistry::Entry &m : ModelRegistry::entries())
       models += (models.empty() ? "" : "; ") + m.name + ": " + m.description;
@@ -573,9 +574,7 @@ namespace NitscheContact
     nonlinear.fast_line_search      = prm.get_bool("Fast line search");
     nonlinear.damping_without_decrease =
       prm.get_integer("Damping after no decrease");
-    reuse_factorization   = prm.get_bool("Reuse factorization");
     stick_on_reversal     = prm.get_bool("Stick step on slip reversal");
-    symmetric_factorization = prm.get_bool("Symmetric factorization");
   }
   prm.leave_subsection();
   }

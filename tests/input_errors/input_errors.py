@@ -135,7 +135,7 @@ CASES = [
     ("elasticity factorisation reuse not a bool",
      "subsection Elasticity\n  subsection Linear solver\n"
      "    set Reuse factorization = sometimes\n  end\nend",
-     ["Reuse factorization", "sometimes", "Bool"]),
+     ["Reuse factorization", "sometimes", "'true' and 'false'"]),
     ("load constant named like a variable",
      "subsection Load\n  set Function constants = x=1\nend",
      ["Load/Function constants", "x=1", "'x' is not"]),
@@ -229,9 +229,12 @@ CASES = [
     ("unknown contact quadrature rule",
      "set Model = mindlin\nsubsection Mindlin\n  set Contact quadrature rule = simpson\nend",
      ["Contact quadrature rule", "simpson", "lobatto"]),
-    ("factorisation reuse not a bool",
-     "subsection Nonlinear solver\n  set Reuse factorization = sometimes\nend",
-     ["Reuse factorization", "sometimes", "'true' and 'false'"]),
+    ("moved entry 'Nonlinear solver/Reuse factorization'",
+     "subsection Nonlinear solver\n  set Reuse factorization = false\nend",
+     ["Nonlinear solver/Reuse factorization", "no longer exists", "'Linear solver'"]),
+    ("moved entry 'Nonlinear solver/Symmetric factorization'",
+     "subsection Nonlinear solver\n  set Symmetric factorization = true\nend",
+     ["Nonlinear solver/Symmetric factorization", "no longer exists", "'Linear solver'"]),
     ("in-plane refinement with local refinement",
      "subsection Geometry\n  set Number of cycles = 2\nend\n"
      "subsection Elasticity\n  set Refine through thickness = false\n"

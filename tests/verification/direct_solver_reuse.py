@@ -24,7 +24,6 @@ from common import parse_args, run, close, check, finish
 from kirchhoff_lib.plate import plate_prm
 
 args = parse_args()
-NO_REUSE = "subsection Nonlinear solver\n  set Reuse factorization = false\nend\n"
 KIRCHHOFF_NO_REUSE = ("subsection Kirchhoff\n  subsection Linear solver\n"
                       "    set Reuse factorization = false\n  end\nend\n")
 KLU = ("subsection Kirchhoff\n  subsection Linear solver\n"

@@ -28,6 +28,12 @@ namespace NitscheContact
     , two_level("raise 'Contact/Nitsche gamma0' (its coercivity bound is "
                 "(1+theta)^2/4 nitsche_trace_constant) or use theta = -1")
   {
+    // the checks of the common input that depend on the model: a
+    // hexahedron refines into 8, r = gamma0 E / t, and the contact surface
+    // is the bottom face
+    prm.check_first_mesh_size(8);
+    prm.check_magnitudes(prm.gamma0 * prm.youngs_modulus / prm.thickness);
+    prm.check_obstacle_below_supported_edges(-0.5 * prm.thickness);
     friction = prm.friction;
     read_parameters(ph);
     make_load_functions();

@@ -52,10 +52,10 @@ namespace NitscheContact
     plate_prm.friction      = 0.;
     plate_prm.obstacle_level_is_midplane = false;
     plate_prm.exact_solution.clear();
-    // the plate's direct solver follows 'Elasticity/Linear solver'
-    plate_prm.reuse_factorization     = linear_solver.reuse_factorization;
-    plate_prm.symmetric_factorization = linear_solver.symmetric_factorization;
     MindlinModel::Settings settings;
+    // the plate's direct solver follows 'Elasticity/Linear solver'
+    settings.reuse_factorization     = linear_solver.reuse_factorization;
+    settings.symmetric_factorization = linear_solver.symmetric_factorization;
     settings.shear              = MindlinModel::Shear::mitc4;
     settings.membrane           = false;
     settings.membrane_setting   = "false";

@@ -17,6 +17,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <nitsche_contact/models/common/model_tools.h>
 #include <nitsche_contact/solvers/column_two_level.h>
 #include <nitsche_contact/model.h>
 #include <nitsche_contact/models/mindlin/mindlin_model.h>

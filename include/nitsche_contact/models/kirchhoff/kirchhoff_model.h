@@ -35,6 +35,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <nitsche_contact/models/common/model_tools.h>
 #include <nitsche_contact/fe/fe_bicubic_hermite.h>
 #include <nitsche_contact/model.h>
 #include <nitsche_contact/solvers/hermite_multigrid.h>

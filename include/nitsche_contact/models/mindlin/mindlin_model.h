@@ -29,6 +29,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <nitsche_contact/models/common/model_tools.h>
 #include <nitsche_contact/model.h>
 #include <nitsche_contact/parameters.h>
 #include <nitsche_contact/solvers/hermite_multigrid.h>
