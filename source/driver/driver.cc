@@ -24,11 +24,6 @@ namespace NitscheContact
       return s.str();
     }
 
-    std::string
-    scheme_name(const NonlinearScheme s)
-    {
-      return s == NonlinearScheme::newton ? "newton" : "fixed point";
-    }
   } // namespace
 
   ContactDriver::ContactDriver(const CommonParameters &prm, MPI_Comm comm)
@@ -212,6 +207,7 @@ namespace NitscheContact
         SolveStage stage;
         stage.cycle        = cycle;
         stage.frictional   = prm.friction * stages[s].friction_scale > 0.;
+        stage.friction_in_run = prm.friction > 0.;
         stage.nested_start = cycle > 0 || predicted;
         if (prm.contact_points_per_iteration)
           {

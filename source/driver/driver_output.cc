@@ -43,11 +43,6 @@ namespace NitscheContact
       return out + "\"";
     }
 
-    std::string
-    scheme_name(const NonlinearScheme s)
-    {
-      return s == NonlinearScheme::newton ? "newton" : "fixed point";
-    }
   } // namespace
 
   void

@@ -7,7 +7,9 @@
 namespace NitscheContact
 {
   DampingSwitch::DampingSwitch(const NonlinearSettings &settings)
-    : settings(settings)
+    : line_search(settings.line_search)
+    , damping_after(settings.damping_after)
+    , damping_without_decrease(settings.damping_without_decrease)
     , damping(settings.line_search && settings.damping_after == 0)
     , best_residual(std::numeric_limits<double>::infinity())
   {}
@@ -18,7 +20,7 @@ namespace NitscheContact
                         const bool           has_energy)
   {
     std::optional<std::string> reason;
-    if (!damping && settings.line_search && counts.n_changed > 0)
+    if (!damping && line_search && counts.n_changed > 0)
       {
         // a status seen two or more iterations ago (the last one recorded
         // is the previous iterate's)
@@ -26,7 +28,7 @@ namespace NitscheContact
             std::find(statuses.begin(), statuses.end() - 1, counts.hash) !=
               statuses.end() - 1)
           reason = "contact status cycles: switching to damped steps";
-        else if (iteration >= settings.damping_after)
+        else if (iteration >= damping_after)
           reason = "no convergence after " + std::to_string(iteration) +
                    " full steps: switching to damped steps";
       }
@@ -39,9 +41,9 @@ namespace NitscheContact
       }
     else if (iteration > 0)
       ++steps_since_best;
-    if (!reason && !damping && settings.line_search && !has_energy &&
-        settings.damping_without_decrease > 0 &&
-        steps_since_best >= settings.damping_without_decrease)
+    if (!reason && !damping && line_search && !has_energy &&
+        damping_without_decrease > 0 &&
+        steps_since_best >= damping_without_decrease)
       reason = "no new minimum of |R| in the last " +
                std::to_string(steps_since_best) +
                " full steps: switching to damped steps";
@@ -90,7 +92,7 @@ namespace NitscheContact
   NonmonotoneWindow::accepts(const double energy_at_full_step,
                              const double slope_at_start) const
   {
-    if (bounds.empty())
+    if (!active())
       return false;
     const std::size_t from = bounds.size() > length ? bounds.size() - length : 0;
     return energy_at_full_step <=

@@ -13,7 +13,7 @@ namespace NitscheContact
     std::string
     iteration_line(const unsigned int   iteration,
                    const ContactCounts &counts,
-                   const bool           frictional,
+                   const bool           friction_in_run,
                    const Correction    &correction,
                    const unsigned int   linear_iterations,
                    const StepChoice    &step)
@@ -21,7 +21,7 @@ namespace NitscheContact
       std::ostringstream line;
       line << "iteration " << std::setw(3) << iteration << ": contact "
            << counts.n_active << "/" << counts.n_points;
-      if (frictional)
+      if (friction_in_run)
         line << " (stick " << counts.n_stick << ", slip " << counts.n_slip
              << ")";
       line << ", changed " << counts.n_changed;
@@ -107,7 +107,7 @@ namespace NitscheContact
                                             counts.residual_norm,
                                             damping.on(),
                                             window);
-        say(iteration_line(k, counts, stage.frictional, correction,
+        say(iteration_line(k, counts, stage.friction_in_run, correction,
                            linear_iterations, step));
         last = {step.length >= 1., correction.relative};
 

@@ -17,6 +17,15 @@ namespace NitscheContact
       s << std::scientific << std::setprecision(3) << x;
       return s.str();
     }
+
+    /// three significant digits, the shortest form
+    std::string
+    short_number(const double x)
+    {
+      std::ostringstream s;
+      s << std::setprecision(3) << x;
+      return s.str();
+    }
   } // namespace
 
   void
@@ -78,10 +87,10 @@ namespace NitscheContact
     std::string line = "converged: the last full step (|dU|_a/|U|_a " +
                        scientific(last.relative);
     if (small_step)
-      line += " <= " + number_to_string(tolerance) + ")";
+      line += " <= " + short_number(tolerance) + ")";
     else
       line += "; estimated next correction " + scientific(estimate) +
-              " <= " + number_to_string(tolerance) + ")";
+              " <= " + short_number(tolerance) + ")";
     return line + " kept the contact status (active-set stop)";
   }
 
@@ -193,23 +202,4 @@ namespace NitscheContact
            "above it";
   }
 
-  double
-  check_equilibrium(const double       residual_norm,
-                    const double       internal_norm,
-                    const double       load_norm,
-                    const bool         allow,
-                    const std::string &causes,
-                    const double       limit)
-  {
-    const double scale    = std::max(internal_norm, load_norm);
-    const double relative = scale > 0. ? residual_norm / scale : 0.;
-    if (!(relative <= limit) && !allow)
-      throw ConvergenceFailure(
-        "the accepted iterate is not an equilibrium (|R| / max(|A U|, |F|) "
-        "= " + number_to_string(relative) + " > " + number_to_string(limit) +
-        "): the nonlinear solver's stopping test (a correction "
-        "below 'Nonlinear solver/Tolerance' relative to |U| on a settled "
-        "contact status) passed without a solution. " + causes);
-    return relative;
-  }
 } // namespace NitscheContact

@@ -1810,19 +1810,15 @@ namespace NitscheContact
 
 
 
-  double
+  std::optional<double>
   HermiteMultigrid::error_estimate(const Vector<double> &r) const
   {
-    constexpr double infinity = std::numeric_limits<double>::infinity();
     // Only with CG's Ritz values of a well-conditioned BA: the smallest
     // Ritz value lies above lambda_min(BA), and far above it when CG has
-    // not resolved the low end of a wide spectrum (a review measured 7-38
-    // times, and estimates 3-26 times too small, for the Mindlin plate at
-    // gamma0 = 2, near its coercivity limit, with cond(BA) ~ 300-1e4;
-    // within 0.9-1.3 times for gamma0 >= 3, cond(BA) <= 10).
+    // not resolved the low end of a wide spectrum.
     if (!last_solve_symmetric || !(ritz_min > 0.) ||
         !(ritz_max <= max_condition_for_estimate * ritz_min))
-      return infinity;
+      return std::nullopt;
     const std::vector<types::global_dof_index> &dofs =
       has_top ? top_dofs : fine_vertex_dofs;
     Vector<double> rs(dofs.size()), z(dofs.size());
@@ -1833,7 +1829,8 @@ namespace NitscheContact
     const double rz = rs * z;
     // a V-cycle that is not positive on r: no bound
     if (!(rz > 0.))
-      return rz == 0. && rs.l2_norm() == 0. ? 0. : infinity;
+      return rz == 0. && rs.l2_norm() == 0. ? std::optional<double>(0.) :
+                                              std::nullopt;
     return std::sqrt(rz / (0.5 * ritz_min));
   }
 

@@ -5,7 +5,7 @@
 #define nitsche_contact_nonlinear_globalisation_h
 
 #include <nitsche_contact/nonlinear/model_view.h>
-#include <nitsche_contact/nonlinear/nonlinear_solver.h>
+#include <nitsche_contact/nonlinear/settings.h>
 
 #include <cstdint>
 #include <optional>
@@ -55,7 +55,9 @@ namespace NitscheContact
            bool                 has_energy);
 
   private:
-    const NonlinearSettings    settings;
+    const bool                 line_search;
+    const unsigned int         damping_after;
+    const unsigned int         damping_without_decrease;
     bool                       damping;
     std::vector<std::uint64_t> statuses;
     double                     best_residual;

@@ -5,22 +5,13 @@
 #define nitsche_contact_nonlinear_model_view_h
 
 #include <nitsche_contact/model.h>
+#include <nitsche_contact/nonlinear/settings.h>
 
 #include <limits>
 #include <optional>
 
 namespace NitscheContact
 {
-  /// Wall-clock seconds per phase of one cycle.
-  struct PhaseTimes
-  {
-    double setup       = 0.;
-    double assembly    = 0.;
-    double solve       = 0.;
-    double postprocess = 0.;
-    double output      = 0.;
-  };
-
   class ModelView
   {
   public:
@@ -81,12 +72,6 @@ namespace NitscheContact
     /// ResidualScale::load_norm(); none without the ability.
     std::optional<double>
     load_norm() const;
-
-    ContactModel &
-    model()
-    {
-      return base;
-    }
 
   private:
     ContactModel               &base;

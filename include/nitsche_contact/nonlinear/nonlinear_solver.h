@@ -8,44 +8,22 @@
 
 #include <nitsche_contact/model.h>
 #include <nitsche_contact/nonlinear/model_view.h>
+#include <nitsche_contact/nonlinear/settings.h>
 
 #include <functional>
 #include <string>
 
 namespace NitscheContact
 {
-  /// The entries of 'Nonlinear solver' that steer one solve.
-  struct NonlinearSettings
-  {
-    NonlinearScheme scheme         = NonlinearScheme::newton;
-    /// converged when |dU|_a <= tolerance |U|_a on a settled status
-    double          tolerance      = 1e-10;
-    /// linear solves per nonlinear solve
-    unsigned int    max_iterations = 50;
-    /// globalise: exact line search on the energy, backtracking otherwise
-    bool            line_search    = true;
-    /// damped steps from this many full steps on (0: always)
-    unsigned int    damping_after  = 100000;
-    /// damped steps after this many full steps without a new smallest |R|,
-    /// for formulations without an energy (0: never)
-    unsigned int    damping_without_decrease = 20;
-    /// full steps accepted when J is below the largest J of this many last
-    /// iterates (0: monotone)
-    unsigned int    nonmonotone_window = 5;
-    /// stop when a full step kept the contact status (frictionless)
-    bool            active_set_stop    = true;
-    /// phi'(t) of the line search without assembling where a model can
-    bool            fast_line_search   = true;
-    /// one log line per iteration
-    bool            print_iterations   = true;
-  };
-
   /// What differs between the nonlinear solves of one run.
   struct SolveStage
   {
     unsigned int cycle = 0;
     /// Coulomb friction in use in this solve (F > 0)
     bool         frictional = false;
+    /// the run has friction (the log counts stick and slip points, also
+    /// in its frictionless stages)
+    bool         friction_in_run = false;
     /// the start is a solution on a coarser mesh or of a predictor (the
     /// non-monotone acceptance of full steps applies only then)
     bool         nested_start = false;

@@ -116,17 +116,6 @@ namespace NitscheContact
                      double       tolerance,
                      double       residual_norm);
 
-  /// Equilibrium check of an accepted iterate (models' postprocess()):
-  /// returns |R| / max(|A U|, |F|) and throws ConvergenceFailure when it
-  /// exceeds `limit` unless `allow` ('Allow non-convergence'); the message
-  /// ends with the model's likely `causes`.
-  double
-  check_equilibrium(double             residual_norm,
-                    double             internal_norm,
-                    double             load_norm,
-                    bool               allow,
-                    const std::string &causes,
-                    double             limit = 1e-4);
 } // namespace NitscheContact
 
 #endif

@@ -60,6 +60,7 @@
 #include <string>
 #include <unordered_map>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace NitscheContact
@@ -325,18 +326,18 @@ namespace NitscheContact
 
     /// An estimate from above of |A^{-1} r|_A, the energy norm of the
     /// correction that the Newton matrix A of the last set_status() gives
-    /// for the right-hand side r (caller's numbering), or +infinity if
-    /// there is none. For the symmetric V-cycle B, |A^{-1} r|_A^2 =
+    /// for the right-hand side r (caller's numbering), none if there is
+    /// none. For the symmetric V-cycle B, |A^{-1} r|_A^2 =
     /// r^T A^{-1} r <= r^T B r / lambda_min(BA); lambda_min is taken from
     /// the Lanczos tridiagonals of the CG solves on this mesh (the smallest
     /// Ritz value seen, which lies above the true one) and halved for
     /// safety, and only when those solves saw a well-conditioned BA
     /// (largest over smallest Ritz value <= max_condition_for_estimate);
-    /// +infinity after GMRES. A heuristic bound: the Ritz value is an
+    /// none after GMRES. A heuristic bound: the Ritz value is an
     /// estimate. One V-cycle. Used by the driver's active-set stop with the
     /// residual at an iterate whose status is that of A, where A^{-1} r is
     /// the next Newton correction (doc/design.md).
-    double
+    std::optional<double>
     error_estimate(const dealii::Vector<double> &r) const;
 
     /// The largest Ritz condition number at which error_estimate() gives

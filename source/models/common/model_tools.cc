@@ -154,4 +154,23 @@ namespace NitscheContact
             "gamma0 > 0, theta = 1 and 0 need gamma0 above their bounds, "
             "doc/theory.md section 2.4)"};
   }
+  double
+  check_equilibrium(const double       residual_norm,
+                    const double       internal_norm,
+                    const double       load_norm,
+                    const bool         allow,
+                    const std::string &causes,
+                    const double       limit)
+  {
+    const double scale    = std::max(internal_norm, load_norm);
+    const double relative = scale > 0. ? residual_norm / scale : 0.;
+    if (!(relative <= limit) && !allow)
+      throw ConvergenceFailure(
+        "the accepted iterate is not an equilibrium (|R| / max(|A U|, |F|) "
+        "= " + number_to_string(relative) + " > " + number_to_string(limit) +
+        "): the nonlinear solver's stopping test (a correction "
+        "below 'Nonlinear solver/Tolerance' relative to |U| on a settled "
+        "contact status) passed without a solution. " + causes);
+    return relative;
+  }
 } // namespace NitscheContact

@@ -5,7 +5,6 @@
 #include <deal.II/grid/grid_tools_cache.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <nitsche_contact/nonlinear/stopping_rules.h>
 
 #include "internal.h"
 

@@ -61,6 +61,17 @@ namespace NitscheContact
   /// for ModelDescription::warnings of the models that use gamma0.
   std::vector<std::string>
   weak_penalty_warnings(double gamma0);
+  /// Equilibrium check of an accepted iterate (the models' postprocess()):
+  /// returns |R| / max(|A U|, |F|) and throws ConvergenceFailure when it
+  /// exceeds `limit` unless `allow` ('Allow non-convergence'); the message
+  /// ends with the model's likely `causes`.
+  double
+  check_equilibrium(double             residual_norm,
+                    double             internal_norm,
+                    double             load_norm,
+                    bool               allow,
+                    const std::string &causes,
+                    double             limit = 1e-4);
 } // namespace NitscheContact
 
 #endif
