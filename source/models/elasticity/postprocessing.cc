@@ -6,6 +6,8 @@
 #include <deal.II/numerics/vector_tools.h>
 
 
+#include <nitsche_contact/models/common/postprocessing_tools.h>
+
 #include "internal.h"
 
 #include <cmath>
@@ -80,9 +82,9 @@ namespace NitscheContact
                                          Vector<double>(3));
     std::vector<std::vector<Tensor<1, 3>>> u_grads(
       face_quadrature.size(), std::vector<Tensor<1, 3>>(3));
-    double area = 0., force = 0., stick_area = 0., slip_area = 0.,
-           max_pressure = 0., max_penetration = -1e300, max_ratio = 0.,
-           tangential_force = 0.;
+    ContactTotals totals;
+    double        stick_area = 0., slip_area = 0., max_pressure = 0.,
+           max_ratio = 0., tangential_force = 0.;
     Tensor<1, 3> tangential_resultant;
     for_each_contact_face(
       fvf,
@@ -98,12 +100,9 @@ namespace NitscheContact
             const PointState st =
               evaluate_contact_point(in, NonlinearScheme::newton);
             const double JxW = fvf.JxW(q);
-            if (ObstacleSurface::has_obstacle(in.gap))
-              max_penetration = std::max(max_penetration, in.u_n - in.gap);
+            totals.add(in, st, JxW);
             if (st.lambda_n < 0.)
               {
-                area += JxW;
-                force += -st.lambda_n * JxW;
                 max_pressure = std::max(max_pressure, -st.lambda_n);
                 if (st.status == PointStatus::slip)
                   slip_area += JxW;
@@ -121,17 +120,14 @@ namespace NitscheContact
             tangential_resultant += st.lambda_t * JxW;
           }
       });
-    res.contact_area  = Utilities::MPI::sum(area, comm);
-    res.contact_force = Utilities::MPI::sum(force, comm);
+    const ContactTotals all = totals.summed_over(comm);
+    res.contact_area        = all.area();
+    res.contact_force       = all.force();
 
     res.extra = {
       {"max_contact_pressure", Utilities::MPI::max(max_pressure, comm)},
       // (null in summary.json where no obstacle lies below any point)
-      {"max_penetration",
-       [&]() {
-         const double m = Utilities::MPI::max(max_penetration, comm);
-         return m > -1e300 ? m : std::numeric_limits<double>::quiet_NaN();
-       }()},
+      {"max_penetration", all.max_penetration()},
       {"nitsche_trace_constant", trace_constant_value},
       {"relative_residual", relative_residual}};
     // (collective sums: every rank has the same prm.friction)

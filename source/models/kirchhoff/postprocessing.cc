@@ -1,7 +1,7 @@
 // The Kirchhoff model's results: contact area and force, extreme and probe
 // deflections, the contact points, and the errors against an exact
 // solution.
-#include <nitsche_contact/models/common/plate_postprocessing.h>
+#include <nitsche_contact/models/common/postprocessing_tools.h>
 #include <nitsche_contact/models/kirchhoff/kirchhoff_model.h>
 
 #include <algorithm>

@@ -5,7 +5,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/fe_values_extractors.h>
 
-#include <nitsche_contact/models/common/plate_postprocessing.h>
+#include <nitsche_contact/models/common/postprocessing_tools.h>
 #include <nitsche_contact/models/mindlin/mindlin_model.h>
 
 #include <cmath>

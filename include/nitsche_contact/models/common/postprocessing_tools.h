@@ -1,9 +1,10 @@
 // Postprocessing that the models share: where an in-plane point lies on a
 // plate model's uniform grid of cells, values at points, and the contact
 // area, force and penetration summed over the contact quadrature points.
-#ifndef nitsche_contact_models_common_plate_postprocessing_h
-#define nitsche_contact_models_common_plate_postprocessing_h
+#ifndef nitsche_contact_models_common_postprocessing_tools_h
+#define nitsche_contact_models_common_postprocessing_tools_h
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 
 #include <nitsche_contact/nitsche_kernel.h>
@@ -77,6 +78,10 @@ namespace NitscheContact
     /// NaN where no obstacle lies below any point.
     double
     max_penetration() const;
+
+    /// The totals over the points of all MPI ranks (collective).
+    ContactTotals
+    summed_over(MPI_Comm comm) const;
 
   private:
     double contact_area  = 0.;

@@ -1,5 +1,5 @@
-// Postprocessing that the models share (plate_postprocessing.h).
-#include <nitsche_contact/models/common/plate_postprocessing.h>
+// Postprocessing that the models share (postprocessing_tools.h).
+#include <nitsche_contact/models/common/postprocessing_tools.h>
 #include <nitsche_contact/parameters.h>
 
 #include <algorithm>
@@ -47,6 +47,16 @@ namespace NitscheContact
     // penetration psi - w = u_n - g where an obstacle lies below the point
     if (ObstacleSurface::has_obstacle(in.gap))
       penetration = std::max(penetration, in.u_n - in.gap);
+  }
+
+  ContactTotals
+  ContactTotals::summed_over(MPI_Comm comm) const
+  {
+    ContactTotals all;
+    all.contact_area  = dealii::Utilities::MPI::sum(contact_area, comm);
+    all.contact_force = dealii::Utilities::MPI::sum(contact_force, comm);
+    all.penetration   = dealii::Utilities::MPI::max(penetration, comm);
+    return all;
   }
 
   double
