@@ -226,13 +226,13 @@ namespace NitscheContact
   {
     // the entry that holds the constants: the load has its own, the exact
     // solution and its derivatives share those of 'Reference solution'
-    // (the obstacle height and the top traction have none)
+    // (other functions have none)
     const std::string constants_entry =
       entry.rfind("Load/", 0) == 0 ? "Load/Function constants" :
-      (entry.rfind("Obstacle/", 0) == 0 ||
-       entry == "Elasticity/Top tangential traction") ?
-                                     "" :
-                                     "Reference solution/Function constants";
+      (entry.rfind("Reference solution/", 0) == 0 ||
+       entry.find("/Exact ") != std::string::npos) ?
+                                     "Reference solution/Function constants" :
+                                     "";
     const std::string vars = dim == 2 ? "x,y" : "x,y,z";
     std::map<std::string, double> consts;
     consts["pi"] = numbers::PI;

@@ -13,7 +13,7 @@
 //   contact terms of every active point are in them), factorised by MUMPS.
 //   Bending (w, phi) and membrane (ubar) are two separate coarse problems:
 //   their coupling (through the contact terms only) is left to the
-//   smoother, measured to cost nothing (doc/benchmarks.md, session 23).
+//   smoother, which costs no extra iterations (doc/benchmarks.md).
 // The smoother removes what varies through the thickness beyond the plate
 // kinematics (stiff, local: the thickness stretch, the warping), the coarse
 // problems remove every plate mode down to the mesh scale. One application

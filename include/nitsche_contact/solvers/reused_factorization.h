@@ -16,10 +16,9 @@
 // Whenever it factorises, it keeps the ordering and symbolic analysis of the
 // first factorisation on the mesh (the sparsity pattern of a mesh's Newton
 // matrices is fixed) and repeats only the numerical factorisation.
-// Reusing the factors after status changes was measured and not kept:
-// GMRES then needs about two iterations per changed point, and its
-// round-off changed the Newton path of the paper's Mindlin test (9 -> 22
-// iterations on the first cycle).
+// After a status change it factorises anew: GMRES with the kept factors
+// would need about two iterations per changed point, and its round-off
+// moves the Newton path.
 //
 // Symmetric Newton matrices (theta = 1 without friction, the Kirchhoff
 // pure penalty) are factorised as L D L^T by calling MUMPS directly with
