@@ -21,7 +21,7 @@
 # two-level solver), 'lin' the linear iterations of the cycle (GMRES; 1 per
 # reused factorisation with 'direct'). The ninth
 # selects how MUMPS factorises the (symmetric, theta = 1) Newton matrices:
-# 'ldlt' (default) or 'lu' (through Amesos, as before session 10). The
+# 'ldlt' (default) or 'lu' (through Amesos). The
 # tenth selects how each cycle starts: 'nested' (default: the previous
 # cycle's solution, U = 0 on the first) or 'plate' ('Elasticity/Plate
 # predictor': the Mindlin plate's solution lifted to 3D; the column 'pred'

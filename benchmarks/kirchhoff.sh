@@ -11,9 +11,9 @@
 # is 'gsv' (default: the .prm's rigid obstacle, GSV alpha*D = 1e-4) or
 # 'penalty' (alpha = 0, kappa = 1e-6: the pure penalty / elastic obstacle
 # of compliance 1e-6, doc/kirchhoff.md 5). STOP is 'Nonlinear solver/
-# Active-set stop' (default true; false for the driver before session 24).
+# Active-set stop' (default true).
 # 6 cycles = 512x512 cells = 1,052,676 dofs (with 'multigrid' about 1.1 GB
-# and 25 s since session 9; with 'direct' about 2.2 GB and a few minutes);
+# and 25 s; with 'direct' about 2.2 GB and a few minutes);
 # 7 cycles = 1024x1024 cells = 4,202,500 dofs (multigrid, about 3.9 GB;
 # its round-off floor is near 1e-9, so give TOLERANCE 1e-8 there).
 # Build in Release first.
