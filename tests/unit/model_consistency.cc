@@ -1,4 +1,4 @@
-// Finite-difference consistency checks of the three models on small
+// Finite-difference consistency checks of the four models on small
 // meshes, at an iterate with contact (after a few full Newton steps from
 // U = 0), for every contact formulation and Nitsche variant:
 //  1. the generalized Jacobian K of assemble(newton, true) against central
@@ -38,6 +38,7 @@
 #include <nitsche_contact/model_registry.h>
 #include <nitsche_contact/models/elasticity/elasticity_model.h>
 #include <nitsche_contact/models/kirchhoff/kirchhoff_model.h>
+#include <nitsche_contact/models/membrane/membrane_model.h>
 #include <nitsche_contact/models/mindlin/mindlin_model.h>
 #include <nitsche_contact/parameters.h>
 
@@ -550,6 +551,22 @@ main(int argc, char **argv)
                               12);
   check_mindlin_kinematics();
   check_mindlin_membrane_energy();
+  // the membrane: T = 0.01 brings it onto the obstacle; Q2 has the
+  // Laplacian terms through which theta acts (Q1 on squares has none)
+  const auto membrane = [](const std::string &entries) {
+    return "subsection Membrane\n  set Tension = 0.01\n" + entries + "end\n";
+  };
+  check_model<MembraneModel>("membrane Q1 theta=1",
+                             prm_text("membrane", 1., 0., membrane("")));
+  for (const double theta : {1., 0., -1.})
+    check_model<MembraneModel>(
+      "membrane Q2 theta=" + std::to_string(int(theta)),
+      prm_text("membrane", theta, 0., membrane("  set Element degree = 2\n")));
+  check_model<MembraneModel>(
+    "membrane Q2 kappa=1e-2 theta=1",
+    prm_text("membrane", 1., 0.,
+             membrane("  set Element degree = 2\n"
+                      "  set Obstacle compliance kappa = 1e-2\n")));
   // 3D: the paper's plate on 6 x 6 x 1 Q2 cells; its bottom face reaches
   // the obstacle after a few full Newton steps
   for (const double theta : {1., 0., -1.})
