@@ -14,9 +14,10 @@
 # (default, paper_mindlin.prm) or 'mitc9' (parameters/paper_mindlin_mitc9.prm,
 # biquadratic; 'lobatto' is then 3x3 Gauss-Lobatto = the Q2 nodes, the
 # default subdivisions 4, the same nodes as MITC4 on 8; direct solver only).
-# The seventh the obstacle's compliance 'Mindlin/Obstacle compliance kappa'
-# (default 0: rigid; 1e-5: an elastic obstacle whose penalty length the
-# 640^2 mesh resolves, doc/mindlin.md 4.3).
+# The seventh the obstacle's compliance 'Contact/Obstacle compliance'
+# (default 0: rigid; 'auto': the program's default, doc/formulations.md;
+# 1e-5: an elastic obstacle whose penalty length the 640^2 mesh resolves,
+# doc/mindlin.md 4.3).
 # The program must be built with CMAKE_BUILD_TYPE=Release.
 set -e
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -27,7 +28,8 @@ solver=${4:-direct}
 element=${6:-mitc4}
 kappa=${7:-0}
 case "$kappa" in
-  ''|*[!0-9.eE+-]*) echo "benchmarks/mindlin.sh: kappa must be a number >= 0, not '$kappa'" >&2; exit 1 ;;
+  auto) ;;
+  ''|*[!0-9.eE+-]*) echo "benchmarks/mindlin.sh: kappa must be 'auto' or a number >= 0, not '$kappa'" >&2; exit 1 ;;
 esac
 case "$element" in
   mitc4) prm=paper_mindlin.prm; subdivisions=${5:-8}; vertex_points=2 ;;
@@ -39,7 +41,6 @@ case "$solver" in
   multigrid) solver_line="\n  subsection Linear solver\n    set Type = multigrid\n  end" ;;
   *) echo "benchmarks/mindlin.sh: solver must be 'direct' or 'multigrid', not '$solver'" >&2; exit 1 ;;
 esac
-solver_line="$solver_line\n  set Obstacle compliance kappa = $kappa"
 case "$subdivisions" in
   ''|*[!0-9]*) echo "benchmarks/mindlin.sh: subdivisions must be a positive integer, not '$subdivisions'" >&2; exit 1 ;;
 esac
@@ -57,6 +58,7 @@ sed -e "s/^\( *set Number of cycles *=\).*/\1 $cycles/" \
     -e "s/^\( *set Subdivisions *=\).*/\1 $subdivisions, $subdivisions/" \
     -e "s/^\( *set Membrane unknowns *=.*\)/\1\n  set Contact quadrature points = $points\n  set Contact quadrature rule = $rule$solver_line/" \
     "$here/parameters/$prm" > "$work/bench.prm"
+printf 'subsection Contact\n  set Obstacle compliance = %s\nend\n' "$kappa" >> "$work/bench.prm"
 start=$(date +%s.%N)
 if [ -x /usr/bin/time ]; then
   /usr/bin/time -v "$exe" "$work/bench.prm" > "$work/log" 2> "$work/time" ||

@@ -294,7 +294,8 @@ def part_a(results):
     prev = None
     for kappa in kappas:
         r = run("penalty_kappa%g" % kappa,
-                base(Kirchhoff={"Stabilisation alpha": 0, "Obstacle compliance kappa": "%g" % kappa}))
+                base(Kirchhoff={"Stabilisation alpha": 0},
+                     Contact={"Obstacle compliance": "%g" % kappa}))
         c = r["cycles"][-1] if r["cycles"] else None
         if not converged(c):
             rows.append(["%g" % kappa, "no (exit %d)" % r["status"]] + ["-"] * 9)

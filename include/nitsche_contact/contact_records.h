@@ -99,6 +99,10 @@ namespace NitscheContact
   {
     double                           contact_area   = 0.;
     double                           contact_force  = 0.;
+    /// The obstacle compliance kappa of this cycle ('Contact/Obstacle
+    /// compliance') and the largest penetration kappa p it causes.
+    double                           obstacle_compliance    = 0.;
+    double                           compliance_penetration = 0.;
     double                           min_deflection = 0.;
     double                           max_deflection = 0.;
     std::vector<double>              probes;

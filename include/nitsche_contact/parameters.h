@@ -13,9 +13,12 @@
 #include <nitsche_contact/parameters/obstacle_surface.h>
 #include <nitsche_contact/nonlinear/nonlinear_solver.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <memory>
 #include <new>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -69,6 +72,9 @@ namespace NitscheContact
     double theta    = 1.;
     double gamma0   = 20.;
     double friction = 0.;
+    /// 'Contact/Obstacle compliance': the number given, none for 'auto'
+    /// (each model then takes obstacle_compliance() of its mesh)
+    std::optional<double> obstacle_compliance;
     /// theta = 1 without friction: the Nitsche terms are the gradient of
     /// a contact energy, so the Newton matrix is symmetric (the Hessian of
     /// the total energy) and the driver's line search can use the energy
@@ -137,6 +143,50 @@ namespace NitscheContact
     /// each, has at most 1e7 cells (models call it).
     void
     check_first_mesh_size(unsigned int children_per_refinement) const;
+
+    /// The compliance kappa of the obstacle for a run whose finest cells
+    /// have the compliance `cell_compliance` (the deflection per pressure
+    /// of the body at the scale h of such a cell, h = finest_cell_size():
+    /// h^4/D for a plate, h^2/T for a membrane): the number of
+    /// 'Contact/Obstacle compliance', or for 'auto'
+    /// auto_compliance_fraction * cell_compliance. One value for all
+    /// cycles: the cycles solve one problem, and nested iteration starts
+    /// each from a solution of it.
+    double
+    compliance_on_mesh(double cell_compliance) const
+    {
+      return obstacle_compliance ? *obstacle_compliance :
+                                   auto_compliance_fraction * cell_compliance;
+    }
+    /// The longest in-plane cell side of the last cycle's uniform mesh.
+    double
+    finest_cell_size() const
+    {
+      return std::max(length_x / subdivisions[0], length_y / subdivisions[1]) /
+             std::pow(2., double(initial_refinement + n_cycles - 1));
+    }
+    /// 'Contact/Obstacle compliance' for the log: the number, or "auto,
+    /// 0.01 <cell_compliance>, h of the last cycle".
+    std::string
+    compliance_text(const std::string &cell_compliance) const
+    {
+      return obstacle_compliance ?
+               number_to_string(*obstacle_compliance) :
+               "auto, " + number_to_string(auto_compliance_fraction) + " " +
+                 cell_compliance + " with h the cell side of the last cycle";
+    }
+    /// kappa / (h^4/D) of 'auto': the regularisation length (kappa D)^(1/4)
+    /// of a plate is then 0.23 h, (kappa T)^(1/2) of a membrane 0.055 h
+    /// (doc/formulations.md, "The obstacle compliance").
+    static constexpr double auto_compliance_fraction = 0.003;
+    /// Whether the obstacle is rigid up to the automatic compliance (not a
+    /// positive number given by the user): an obstacle above a supported
+    /// edge then leaves the problem without a solution.
+    bool
+    obstacle_is_rigid() const
+    {
+      return !obstacle_compliance || *obstacle_compliance == 0.;
+    }
 
     /// InputError when the rigid obstacle lies above `surface`, the height
     /// of the undeformed body's contact surface, on a clamped or simply

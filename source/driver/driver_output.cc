@@ -69,6 +69,10 @@ namespace NitscheContact
     pcout << "  contact area " << r.contact_area << ", contact force "
           << r.contact_force << ", deflection in [" << r.min_deflection
           << ", " << r.max_deflection << "]" << std::endl;
+    if (r.obstacle_compliance > 0.)
+      pcout << "  obstacle compliance kappa " << r.obstacle_compliance
+            << ", penetration by it up to " << r.compliance_penetration
+            << std::endl;
     for (unsigned int p = 0; p < r.probes.size(); ++p)
       pcout << "  deflection at (" << prm.probes[p] << ") = " << r.probes[p]
             << std::endl;
@@ -316,6 +320,10 @@ namespace NitscheContact
           << json_number(r.results.contact_area)
           << ",\n      \"contact_force\": "
           << json_number(r.results.contact_force)
+          << ",\n      \"obstacle_compliance\": "
+          << json_number(r.results.obstacle_compliance)
+          << ",\n      \"compliance_penetration\": "
+          << json_number(r.results.compliance_penetration)
           << ",\n      \"min_deflection\": "
           << json_number(r.results.min_deflection)
           << ",\n      \"max_deflection\": "

@@ -151,6 +151,20 @@ namespace NitscheContact
                     "constant of the element (doc/theory.md).");
       declare_entry(prm, "Friction coefficient", "0", Patterns::Double(),
                     "The Coulomb friction coefficient F (0: frictionless).");
+      declare_entry(prm, "Obstacle compliance", "auto", Patterns::Anything(),
+                    "The obstacle's compliance kappa (length per pressure) "
+                    "in the contact law p >= 0, g - u_n + kappa p >= 0, p (g "
+                    "- u_n + kappa p) = 0: an elastic (Winkler) layer of "
+                    "stiffness 1/kappa on the obstacle. A number >= 0 is "
+                    "used as given; 0 is the rigid obstacle. 'auto' takes on "
+                    "each cycle a fixed fraction of the body's own "
+                    "compliance at the scale of a cell (h^4/D for the "
+                    "plates, h^2/T for the membrane; doc/formulations.md "
+                    "section 6), which keeps the number of Newton "
+                    "iterations from growing with the mesh and changes the "
+                    "solution by less than the discretisation error; the "
+                    "log and summary.json give the value and the largest "
+                    "penetration it causes.");
       prm.leave_subsection();
     }
 
@@ -546,6 +560,19 @@ namespace NitscheContact
     if (!(friction >= 0.))
       bad_value("Contact/Friction coefficient", number_to_string(friction),
                 "must be >= 0");
+    const std::string compliance = Utilities::trim(prm.get("Obstacle compliance"));
+    if (compliance == "auto")
+      obstacle_compliance.reset();
+    else
+      {
+        char        *end = nullptr;
+        const double v   = std::strtod(compliance.c_str(), &end);
+        if (compliance.empty() || end == nullptr || *end != '\0' ||
+            !std::isfinite(v) || v < 0.)
+          bad_value("Contact/Obstacle compliance", compliance,
+                    "'auto' or a number >= 0");
+        obstacle_compliance = v;
+      }
   }
   prm.leave_subsection();
   }

@@ -371,14 +371,21 @@ CASES = [
      "set Model = kirchhoff\nsubsection Geometry\n  set Subdivisions = 2, 2\nend\n"
      "subsection Kirchhoff\n  set Stabilisation alpha = -1e-4\nend",
      ["Stabilisation alpha", "-1e-4", ">= 0"]),
-    ("Kirchhoff kappa < 0",
+    ("obstacle compliance < 0",
+     "subsection Contact\n  set Obstacle compliance = -1e-5\nend",
+     ["Contact/Obstacle compliance", "-1e-5", "'auto' or a number >= 0"]),
+    ("obstacle compliance not a number",
+     "subsection Contact\n  set Obstacle compliance = soft\nend",
+     ["Contact/Obstacle compliance", "soft", "'auto' or a number >= 0"]),
+    ("Kirchhoff compliance entry of the old layout",
+     "set Model = kirchhoff\nsubsection Kirchhoff\n  set Obstacle compliance kappa = 1e-6\nend",
+     ["Kirchhoff/Obstacle compliance kappa", "no longer exists", "'Obstacle compliance'",
+      "'Contact'"]),
+    ("Kirchhoff pure penalty on a rigid obstacle",
      "set Model = kirchhoff\nsubsection Geometry\n  set Subdivisions = 2, 2\nend\n"
-     "subsection Kirchhoff\n  set Obstacle compliance kappa = -1\nend",
-     ["Obstacle compliance kappa", "-1", ">= 0"]),
-    ("Mindlin kappa < 0",
-     "set Model = mindlin\nsubsection Geometry\n  set Subdivisions = 2, 2\nend\n"
-     "subsection Mindlin\n  set Obstacle compliance kappa = -1e-5\nend",
-     ["Obstacle compliance kappa", "-1e-5", ">= 0"]),
+     "subsection Kirchhoff\n  set Stabilisation alpha = 0\nend\n"
+     "subsection Contact\n  set Obstacle compliance = 0\nend",
+     ["Kirchhoff/Stabilisation alpha", "'0'", "Contact/Obstacle compliance"]),
     ("Kirchhoff exact gradient without an exact solution",
      "set Model = kirchhoff\nsubsection Geometry\n  set Subdivisions = 2, 2\nend\n"
      "subsection Kirchhoff\n  set Exact gradient = x; y\nend",

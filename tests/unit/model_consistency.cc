@@ -50,6 +50,7 @@
 #include <limits>
 #include <memory>
 #include <random>
+#include <sstream>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -60,6 +61,17 @@ using namespace NitscheContact;
 namespace
 {
   std::ofstream out("output");
+
+  // 'Contact/Obstacle compliance' = kappa (after prm_text(), whose rigid
+  // obstacle it replaces: the last 'set' wins)
+  std::string
+  compliance(const double kappa)
+  {
+    std::ostringstream s;
+    s << "subsection Contact\n  set Obstacle compliance = " << kappa
+      << "\nend\n";
+    return s.str();
+  }
 
   // Paper-like data on a small clamped square; the obstacle is close
   // enough that a contact zone with stick and slip points forms.
@@ -81,7 +93,7 @@ namespace
            "subsection Contact\n  set Nitsche theta = " +
            std::to_string(int(theta)) +
            "\n  set Friction coefficient = " + std::to_string(friction) +
-           "\nend\n"
+           "\n  set Obstacle compliance = 0\nend\n"
            "subsection Output\n  set Format = none\n"
            "  set Directory = output-dir\nend\n"
            // the generalized Jacobian everywhere (the stick step of a
@@ -388,7 +400,8 @@ namespace
             "subsection Contact\n  set Nitsche theta = " +
             std::to_string(theta) +
             "\n  set Nitsche gamma0 = 20\n"
-            "  set Friction coefficient = 0.5\nend\n"
+            "  set Friction coefficient = 0.5\n"
+            "  set Obstacle compliance = 0\nend\n"
             "subsection Elasticity\n  set Polynomial degree = " +
             std::to_string(degree) +
             "\n  subsection Linear solver\n    set Type = direct\n  end\nend\n"
@@ -513,12 +526,12 @@ main(int argc, char **argv)
   check_model<KirchhoffModel>(
     "kirchhoff gsv kappa=1e-2 theta=1",
     prm_text("kirchhoff", 1., 0.,
-             gsv + "  set Obstacle compliance kappa = 1e-2\nend\n"));
+             gsv + "end\n" + compliance(1e-2)));
   check_model<KirchhoffModel>(
     "kirchhoff penalty kappa=1e-3",
     prm_text("kirchhoff", 0., 0.,
-             "subsection Kirchhoff\n  set Stabilisation alpha = 0\n"
-             "  set Obstacle compliance kappa = 1e-3\nend\n"));
+             "subsection Kirchhoff\n  set Stabilisation alpha = 0\nend\n" +
+               compliance(1e-3)));
   for (const double theta : {1., 0., -1.})
     check_model<KirchhoffModel>(
       "kirchhoff nitsche theta=" + std::to_string(int(theta)),
@@ -537,8 +550,7 @@ main(int argc, char **argv)
   // an elastic obstacle, kappa r = 4 (r = gamma0 E / t = 4e8): the factor
   // 1/(1 + kappa r) in the residual, the Jacobian, the energy and the
   // friction threshold
-  const std::string compliant =
-    "subsection Mindlin\n  set Obstacle compliance kappa = 1e-8\nend\n";
+  const std::string compliant = compliance(1e-8);
   check_model<MindlinModel>("mindlin kappa=1e-8 theta=1",
                             prm_text("mindlin", 1., 0., compliant));
   check_model<MindlinModel>("mindlin friction 0.2 kappa=1e-8 theta=-1",
@@ -565,8 +577,7 @@ main(int argc, char **argv)
   check_model<MembraneModel>(
     "membrane Q2 kappa=1e-2 theta=1",
     prm_text("membrane", 1., 0.,
-             membrane("  set Element degree = 2\n"
-                      "  set Obstacle compliance kappa = 1e-2\n")));
+             membrane("  set Element degree = 2\n") + compliance(1e-2)));
   // 3D: the paper's plate on 6 x 6 x 1 Q2 cells; its bottom face reaches
   // the obstacle after a few full Newton steps
   for (const double theta : {1., 0., -1.})
@@ -578,6 +589,12 @@ main(int argc, char **argv)
                                    std::to_string(int(theta)),
                                  prm_text("elasticity", theta, 0.2, ""),
                                  12);
+  // an elastic obstacle, kappa r = 0.4 (r = gamma0 E / t = 4e8)
+  check_model<ElasticityModel>("elasticity kappa=1e-9 theta=1",
+                               prm_text("elasticity", 1., 0., compliance(1e-9)));
+  check_model<ElasticityModel>("elasticity friction 0.2 kappa=1e-9 theta=-1",
+                               prm_text("elasticity", -1., 0.2, compliance(1e-9)),
+                               12);
   check_elasticity_friction_consistency();
   return 0;
 }

@@ -109,7 +109,7 @@ for degree in (1, 2):
                membrane_prm(lx=L, ly=W, sub=(8, 2), cycles=5, load=q, tension=T, degree=degree,
                             edges="clamped, clamped, free, free", probes=probes,
                             obstacle="set Type = plane\n  set Level = %r" % -d,
-                            extra="subsection Membrane\n  set Obstacle compliance kappa = %r\nend\n"
+                            extra="subsection Contact\n  set Obstacle compliance = %r\nend\n"
                             % kappa))
     errors = []
     for c in s["cycles"]:

@@ -1,4 +1,4 @@
-"""'Mindlin/Obstacle compliance kappa': the Mindlin plate on an elastic
+"""'Contact/Obstacle compliance': the Mindlin plate on an elastic
 (Winkler) obstacle, Lambda_n = [sigma_n - r (u_n - g)]_- / (1 + kappa r).
 
  1. Exact solution: a free square plate lying on the obstacle (gap 0 at
@@ -61,9 +61,9 @@ end
 subsection Contact
   set Nitsche theta = %d
   set Nitsche gamma0 = %g
+  set Obstacle compliance = %g
 end
 subsection Mindlin
-  set Obstacle compliance kappa = %g
   set Contact quadrature points = 2
   set Contact quadrature rule = lobatto
   subsection Linear solver
@@ -105,16 +105,17 @@ def mindlin(kappa):
     tolerance 1e-8) with vertex contact points and the compliance kappa."""
     return shipped_prm("paper_mindlin.prm", [
         ("Probe points", PROBES),
-        ("Membrane unknowns", "auto\n  set Obstacle compliance kappa = %g\n"
+        ("Membrane unknowns", "auto\n"
          "  set Contact quadrature points = 2\n"
-         "  set Contact quadrature rule = lobatto" % kappa)])
+         "  set Contact quadrature rule = lobatto")],
+        "subsection Contact\n  set Obstacle compliance = %g\nend\n" % kappa)
 
 
 soft = 0.05
 m, _ = run(args, "paper_mindlin_soft", mindlin(soft))
 k, _ = run(args, "paper_kirchhoff_soft", shipped_prm("paper_kirchhoff.prm", [
-    ("Probe points", PROBES), ("Tolerance", "1e-8"), ("Stabilisation alpha", "0"),
-    ("Obstacle compliance kappa", str(soft))]))
+    ("Probe points", PROBES), ("Tolerance", "1e-8"), ("Stabilisation alpha", "0")],
+    "subsection Contact\n  set Obstacle compliance = %g\nend\n" % soft))
 rigid, _ = run(args, "paper_mindlin_rigid", mindlin(0.))
 m, k, rigid = m["cycles"][-1], k["cycles"][-1], rigid["cycles"][-1]
 check(m["converged"] and k["converged"] and rigid["converged"], "paper test runs converged")

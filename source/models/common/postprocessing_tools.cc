@@ -43,6 +43,7 @@ namespace NitscheContact
       {
         contact_area += JxW;
         contact_force += pressure * JxW;
+        largest_pressure = std::max(largest_pressure, pressure);
       }
     // penetration psi - w = u_n - g where an obstacle lies below the point
     if (ObstacleSurface::has_obstacle(in.gap))
@@ -56,6 +57,8 @@ namespace NitscheContact
     all.contact_area  = dealii::Utilities::MPI::sum(contact_area, comm);
     all.contact_force = dealii::Utilities::MPI::sum(contact_force, comm);
     all.penetration   = dealii::Utilities::MPI::max(penetration, comm);
+    all.largest_pressure =
+      dealii::Utilities::MPI::max(largest_pressure, comm);
     return all;
   }
 

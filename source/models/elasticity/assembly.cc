@@ -297,7 +297,8 @@ namespace NitscheContact
     const double                     r) const
   {
     return contact_input(u_value, u_gradient, fvf.normal_vector(q),
-                         fvf.quadrature_point(q), r, prm, obstacle, friction);
+                         fvf.quadrature_point(q), r, kappa, prm, obstacle,
+                         friction);
   }
 
   void
@@ -742,7 +743,7 @@ namespace NitscheContact
             const double s0 = in0.sigma_n - r * (in0.u_n - in0.gap);
             const double ds = ind.sigma_n - r * ind.u_n;
             const double coefficient =
-              fvf.JxW(q) *
+              fvf.JxW(q) * in0.lambda_scale *
               (ind.u_n - (prm.theta / r) * ind.sigma_n);
             const bool active0 = (s0 <= 0.), active1 = (s0 + ds <= 0.);
             if (active0 && active1)

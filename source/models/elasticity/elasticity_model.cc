@@ -33,7 +33,8 @@ namespace NitscheContact
     // is the bottom face
     prm.check_first_mesh_size(8);
     prm.check_magnitudes(prm.gamma0 * prm.youngs_modulus / prm.thickness);
-    prm.check_obstacle_below_supported_edges(-0.5 * prm.thickness);
+    if (prm.obstacle_is_rigid())
+      prm.check_obstacle_below_supported_edges(-0.5 * prm.thickness);
     friction = prm.friction;
     read_parameters(ph);
     make_load_functions();
@@ -69,6 +70,7 @@ namespace NitscheContact
       {"r", "gamma0 E / h_n, h_n = |K|/|F| (cell height normal to the "
             "contact face)"},
       {"friction", s(prm.friction)},
+      {"obstacle compliance kappa", prm.compliance_text("max(h^4/D, h/E)")},
       {"contact quadrature",
        std::to_string(contact_quadrature_points) + "x" +
          std::to_string(contact_quadrature_points) +

@@ -32,13 +32,15 @@ namespace NitscheContact
 
     /// The kernel input at a point of the contact face from the displacement
     /// u and its gradient there: normal n, position x (for the gap to the
-    /// obstacle height field), Nitsche parameter r.
+    /// obstacle height field), Nitsche parameter r, obstacle compliance
+    /// kappa.
     inline PointInput
     contact_input(const dealii::Vector<double>            &u_value,
                   const std::vector<dealii::Tensor<1, 3>> &u_gradient,
                   const dealii::Tensor<1, 3>              &n,
                   const dealii::Point<3>                  &x,
                   const double                             r,
+                  const double                             kappa,
                   const CommonParameters                  &prm,
                   const ObstacleSurface                   &obstacle,
                   const double                             friction)
@@ -61,6 +63,7 @@ namespace NitscheContact
       in.gap      = x[2] - obstacle.height(dealii::Point<2>(x[0], x[1]));
       in.r        = r;
       in.theta    = prm.theta;
+      in.lambda_scale = 1. / (1. + kappa * r);
       in.friction = friction;
       return in;
     }

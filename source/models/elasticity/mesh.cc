@@ -234,6 +234,12 @@ namespace NitscheContact
     step_correction.reinit(locally_owned, comm);
     previous_status.clear();
     previous_q.clear();
+    // the body's compliance at the scale h of the last cycle's in-plane
+    // cells: that of a plate, h^4/D, where h is large against the
+    // thickness, that of an elastic half-space, h/E, where it is small
+    const double h = prm.finest_cell_size();
+    kappa          = prm.compliance_on_mesh(
+      std::max(std::pow(h, 4) / prm.bending_stiffness(), h / prm.youngs_modulus));
   }
 
   void

@@ -27,9 +27,11 @@ namespace NitscheContact
       /// contact quadrature points, written as constants on the face.
       ContactPostprocessor(const CommonParameters                  &prm,
                            const ObstacleSurface                   &obstacle,
+                           const double                             kappa,
                            const std::array<Vector<double>, 3> &face_means)
         : prm(prm)
         , obstacle(obstacle)
+        , kappa(kappa)
         , face_means(face_means)
       {}
 
@@ -54,6 +56,7 @@ namespace NitscheContact
                                                 n,
                                                 in.evaluation_points[q],
                                                 r,
+                                                kappa,
                                                 prm,
                                                 obstacle,
                                                 prm.friction);
@@ -94,6 +97,7 @@ namespace NitscheContact
     private:
       const CommonParameters              &prm;
       const ObstacleSurface               &obstacle;
+      const double                         kappa; ///< obstacle compliance
       const std::array<Vector<double>, 3> &face_means;
     };
 
@@ -240,7 +244,7 @@ namespace NitscheContact
         if (area[k] > 0.)
           for (auto &v : face_means)
             v[k] /= area[k];
-      ContactPostprocessor contact_post(prm, obstacle, face_means);
+      ContactPostprocessor contact_post(prm, obstacle, kappa, face_means);
       ContactFaces         faces;
       faces.attach_dof_handler(dof_handler);
       faces.add_data_vector(ghosted, names, DataOutFaces<3>::type_dof_data,

@@ -123,6 +123,7 @@ namespace NitscheContact
     const ContactTotals all = totals.summed_over(comm);
     res.contact_area        = all.area();
     res.contact_force       = all.force();
+    all.report_compliance(kappa, res);
 
     res.extra = {
       {"max_contact_pressure", Utilities::MPI::max(max_pressure, comm)},

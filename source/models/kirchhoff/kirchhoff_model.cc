@@ -100,7 +100,8 @@ namespace NitscheContact
                               number_to_string(prm.gamma0 * prm.youngs_modulus /
                                   prm.thickness));
       }
-    d.emplace_back("kappa", number_to_string(kappa));
+    d.emplace_back("obstacle compliance kappa",
+                   prm.compliance_text("h^4/D"));
     d.emplace_back("bending stiffness D", number_to_string(D));
     d.emplace_back("obstacle convention",
                    prm.obstacle_level_is_midplane ?

@@ -36,14 +36,8 @@ namespace NitscheContact
         "bound that depends on theta and on the cell shape (alpha*D < "
         "1.89e-4 for theta = 1 on square cells with nu = 0.3), which the "
         "program computes for its cells and warns about. 0 selects the pure "
-        "penalty method p = [psi - w]_+ / kappa, which needs kappa > 0.");
-      declare_entry(prm,
-        "Obstacle compliance kappa",
-        "0",
-        Patterns::Double(0.),
-        "Compliance of the obstacle (length per pressure) in the contact law "
-        "p >= 0, w - psi + kappa p >= 0, p (w - psi + kappa p) = 0. 0 is a "
-        "rigid obstacle; a positive value models an elastic foundation.");
+        "penalty method p = [psi - w]_+ / kappa with kappa of 'Contact/"
+        "Obstacle compliance', which must then not be 0.");
       declare_entry(prm,
         "Quadrature points",
         "6",
@@ -131,6 +125,8 @@ namespace NitscheContact
       declare_moved_entry(std::string("Kirchhoff/") + entry,
                           std::string("use '") + entry +
                             "' in subsection 'Kirchhoff/Linear solver'");
+    declare_moved_entry("Kirchhoff/Obstacle compliance kappa",
+                        "use 'Obstacle compliance' in subsection 'Contact'");
     declare_moved_entry("Kirchhoff/Linear solver",
                         "use 'Type' in subsection 'Kirchhoff/Linear solver'");
   }
@@ -147,7 +143,6 @@ namespace NitscheContact
                       Formulation::gsv :
                       Formulation::nitsche;
       alpha_D      = param.get_double("Stabilisation alpha");
-      kappa        = param.get_double("Obstacle compliance kappa");
       n_quadrature = param.get_integer("Quadrature points");
       read_linear_solver_parameters(param);
       const std::string grad = dealii::Utilities::trim(param.get("Exact gradient"));
@@ -207,7 +202,7 @@ namespace NitscheContact
     // mid-plane, and a compliant obstacle may lie above a supported edge
     prm.check_first_mesh_size(4);
     prm.check_magnitudes(0.);
-    if (!(kappa > 0.))
+    if (prm.obstacle_is_rigid())
       prm.check_obstacle_below_supported_edges(
         prm.obstacle_level_is_midplane ? 0. : -0.5 * prm.thickness);
     if (!(alpha_D >= 0.))
@@ -216,10 +211,6 @@ namespace NitscheContact
       bad_value("Kirchhoff/Linear solver/Krylov tolerance",
                 number_to_string(krylov_tolerance),
                 "must be in (0, 1)");
-    if (!(kappa >= 0.))
-      bad_value("Kirchhoff/Obstacle compliance kappa",
-                number_to_string(kappa),
-                "must be >= 0");
     // (the common check does not cover the Nitsche parameter of this model)
     if (formulation == Formulation::nitsche)
       prm.check_magnitudes(prm.gamma0 * prm.youngs_modulus / prm.thickness);
@@ -232,12 +223,13 @@ namespace NitscheContact
                 "exceeds the bending stiffness by orders of magnitude, the "
                 "point smoother fails (measured: 260 Krylov iterations per "
                 "Newton step, no Newton convergence); use 'direct'");
-    if (formulation == Formulation::gsv && alpha_D == 0. && kappa == 0.)
+    if (formulation == Formulation::gsv && alpha_D == 0. &&
+        prm.obstacle_compliance == 0.)
       bad_value("Kirchhoff/Stabilisation alpha",
                 "0",
-                "alpha = 0 is the pure penalty method, which needs 'Obstacle "
-                "compliance kappa' > 0; use alpha*D > 0 for a rigid "
-                "obstacle");
+                "alpha = 0 is the pure penalty method, which needs "
+                "'Contact/Obstacle compliance' > 0 or 'auto'; use alpha*D > 0 "
+                "for a rigid obstacle");
     if (prm.subdivisions.size() < 2)
       bad_value("Geometry/Subdivisions", "", "expected 'nx, ny'");
     require_one_layer(prm, "Kirchhoff");

@@ -2,6 +2,7 @@
 // and its checks.
 #include <nitsche_contact/models/common/model_tools.h>
 #include <nitsche_contact/models/membrane/membrane_model.h>
+#include <nitsche_contact/moved_entries.h>
 
 #include <cmath>
 
@@ -39,13 +40,6 @@ namespace NitscheContact
         "points per direction), which the program warns about; Q1 on "
         "parallelograms has Delta_h w = 0 and no bound.");
       declare_entry(prm,
-        "Obstacle compliance kappa",
-        "0",
-        Patterns::Double(0.),
-        "Compliance of the obstacle (length per pressure) in the contact "
-        "law p >= 0, w - psi + kappa p >= 0, p (w - psi + kappa p) = 0. 0 "
-        "is a rigid obstacle.");
-      declare_entry(prm,
         "Contact quadrature rule",
         "gauss",
         Patterns::Selection("gauss|lobatto"),
@@ -59,6 +53,8 @@ namespace NitscheContact
         "contact points are the vertices, the nodes of Q1.");
     }
     prm.leave_subsection();
+    declare_moved_entry("Membrane/Obstacle compliance kappa",
+                        "use 'Obstacle compliance' in subsection 'Contact'");
   }
 
 
@@ -71,7 +67,6 @@ namespace NitscheContact
       tension                      = param.get_double("Tension");
       degree                       = param.get_integer("Element degree");
       alpha                        = param.get_double("Stabilisation alpha");
-      kappa                        = param.get_double("Obstacle compliance kappa");
       contact_rule_name            = param.get("Contact quadrature rule");
       contact_points_per_direction = param.get_integer("Contact quadrature points");
     }
@@ -90,9 +85,6 @@ namespace NitscheContact
     if (!(alpha > 0.) || !std::isfinite(alpha))
       bad_value("Membrane/Stabilisation alpha", number_to_string(alpha),
                 "a finite number > 0");
-    if (!(kappa >= 0.) || !std::isfinite(kappa))
-      bad_value("Membrane/Obstacle compliance kappa", number_to_string(kappa),
-                "a finite number >= 0");
     if (prm.subdivisions.size() < 2)
       bad_value("Geometry/Subdivisions", "", "expected 'nx, ny'");
     if (prm.subdivisions.size() > 2 && prm.subdivisions[2] != 1)
@@ -104,7 +96,7 @@ namespace NitscheContact
                 "give 'nx, ny'");
     prm.check_first_mesh_size(4);
     // a rigid obstacle above a supported edge (w = 0) leaves no solution
-    if (kappa == 0.)
+    if (prm.obstacle_is_rigid())
       prm.check_obstacle_below_supported_edges(0.);
     if (!prm.exact_solution.empty())
       check_finite_on_plate(*make_parsed_function<2>(prm.exact_solution,

@@ -144,6 +144,7 @@ namespace NitscheContact
       }
     res.contact_area  = totals.area();
     res.contact_force = totals.force();
+    totals.report_compliance(kappa, res);
     res.probes        = deflection_at(probes);
     if (exact_solution)
       compute_errors(res);

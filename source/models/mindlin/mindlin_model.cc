@@ -32,7 +32,7 @@ namespace NitscheContact
     common.check_first_mesh_size(4);
     common.check_magnitudes(common.gamma0 * common.youngs_modulus /
                             common.thickness);
-    if (!(settings.obstacle_compliance > 0.))
+    if (common.obstacle_is_rigid())
       common.check_obstacle_below_supported_edges(
         common.obstacle_level_is_midplane ? 0. : -0.5 * common.thickness);
   }
@@ -147,9 +147,8 @@ namespace NitscheContact
                      (settings.contact_rule == "lobatto" ? " Gauss-Lobatto" :
                                                            " Gauss"));
     d.emplace_back("linear solver", settings.linear_solver);
-    if (settings.obstacle_compliance > 0.)
-      d.emplace_back("obstacle compliance kappa",
-                     number_to_string(settings.obstacle_compliance));
+    d.emplace_back("obstacle compliance kappa",
+                   prm.compliance_text("h^4/D"));
     return d;
   }
 
@@ -263,7 +262,9 @@ namespace NitscheContact
                          prm.thickness :
                          std::max(hx, hy);
     r = prm.gamma0 * prm.youngs_modulus / h_n;
-    lambda_scale = 1. / (1. + settings.obstacle_compliance * r);
+    kappa = prm.compliance_on_mesh(std::pow(prm.finest_cell_size(), 4) /
+                                   prm.bending_stiffness());
+    lambda_scale = 1. / (1. + kappa * r);
     {
       const std::string w =
         theta_bending_bias_warning(prm, h_n, "Mindlin plate",

@@ -56,18 +56,6 @@ namespace NitscheContact
       declare_entry(prm, "Contact quadrature rule", "gauss",
                     Patterns::Selection("gauss|lobatto"),
                     contact_rule_help);
-      declare_entry(prm,
-        "Obstacle compliance kappa",
-        "0",
-        Patterns::Double(0.),
-        "Compliance kappa >= 0 of the obstacle (length per pressure), as "
-        "'Kirchhoff/Obstacle compliance kappa': the contact law is p >= 0, "
-        "w - psi + kappa p >= 0 (bottom face) with complementarity, an "
-        "elastic (Winkler) obstacle of stiffness 1/kappa; 0 is a rigid "
-        "obstacle. It enters as the factor 1/(1 + kappa r) on the Nitsche "
-        "contact stress, so that r and the theta-terms stay those of the "
-        "rigid obstacle (doc/mindlin.md 4.3).");
-
       prm.enter_subsection("Linear solver");
       {
         declare_entry(prm,
@@ -116,6 +104,8 @@ namespace NitscheContact
     }
     prm.leave_subsection();
 
+    declare_moved_entry("Mindlin/Obstacle compliance kappa",
+                        "use 'Obstacle compliance' in subsection 'Contact'");
     declare_moved_entry("Mindlin/Linear solver",
                         "use 'Type' (direct or multigrid) and 'Direct "
                         "solver' in subsection 'Mindlin/Linear solver'");
@@ -160,7 +150,6 @@ namespace NitscheContact
     s.nitsche_length_is_thickness = prm.get("Nitsche length") == "thickness";
     s.contact_quadrature  = prm.get_integer("Contact quadrature points");
     s.contact_rule        = prm.get("Contact quadrature rule");
-    s.obstacle_compliance = prm.get_double("Obstacle compliance kappa");
     prm.enter_subsection("Linear solver");
     s.multigrid               = prm.get("Type") == "multigrid";
     s.linear_solver           = s.multigrid ? "multigrid" :

@@ -25,6 +25,8 @@ namespace NitscheContact
     res.errors        = solution_errors();
     res.contact_area  = s.area;
     res.contact_force = s.force;
+    res.obstacle_compliance    = kappa;
+    res.compliance_penetration = kappa * s.max_pressure;
     res.min_deflection = std::numeric_limits<double>::max();
     res.max_deflection = -std::numeric_limits<double>::max();
     const IndexSet w_dofs = DoFTools::extract_dofs(
@@ -167,8 +169,9 @@ namespace NitscheContact
               }
           }
       }
-    s.area  = totals.area();
-    s.force = totals.force();
+    s.area         = totals.area();
+    s.force        = totals.force();
+    s.max_pressure = totals.max_pressure();
     return s;
   }
 

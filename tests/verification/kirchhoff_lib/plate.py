@@ -31,11 +31,11 @@ subsection Obstacle
 end
 subsection Contact
   set Nitsche theta = {theta}
+  set Obstacle compliance = {kappa!r}
 end
 subsection Kirchhoff
   set Contact formulation = {formulation}
   set Stabilisation alpha = {alpha!r}
-  set Obstacle compliance kappa = {kappa!r}
 end
 subsection Nonlinear solver
   set Scheme = {scheme}

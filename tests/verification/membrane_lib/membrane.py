@@ -6,7 +6,7 @@ def membrane_prm(lx=1.0, ly=1.0, sub=(4, 4), refinement=0, cycles=1,
                  edges="clamped, clamped, clamped, clamped", load="1",
                  obstacle="set Type = plane\n  set Level = -1e6", tension=1.0,
                  degree=1, alpha=0.01, rule="gauss", points=3, theta=1,
-                 scheme="newton", probes="0.5, 0.5", exact="", extra=""):
+                 scheme="newton", probes="0.5, 0.5", exact="", compliance="0", extra=""):
     return f"""set Model = membrane
 subsection Geometry
   set Length x = {lx!r}
@@ -24,6 +24,7 @@ subsection Obstacle
 end
 subsection Contact
   set Nitsche theta = {theta}
+  set Obstacle compliance = {compliance}
 end
 subsection Membrane
   set Tension = {tension!r}

@@ -7,6 +7,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 
+#include <nitsche_contact/contact_records.h>
 #include <nitsche_contact/nitsche_kernel.h>
 
 #include <limits>
@@ -78,6 +79,20 @@ namespace NitscheContact
     /// NaN where no obstacle lies below any point.
     double
     max_penetration() const;
+    /// The largest contact pressure p = -Lambda_n (0 without contact).
+    double
+    max_pressure() const
+    {
+      return largest_pressure;
+    }
+    /// Set obstacle_compliance and compliance_penetration (kappa times the
+    /// largest pressure) of `results` for the compliance kappa.
+    void
+    report_compliance(double kappa, CycleResults &results) const
+    {
+      results.obstacle_compliance    = kappa;
+      results.compliance_penetration = kappa * largest_pressure;
+    }
 
     /// The totals over the points of all MPI ranks (collective).
     ContactTotals
@@ -87,6 +102,7 @@ namespace NitscheContact
     double contact_area  = 0.;
     double contact_force = 0.;
     double penetration   = -std::numeric_limits<double>::max();
+    double largest_pressure = 0.;
   };
 } // namespace NitscheContact
 

@@ -439,6 +439,8 @@ namespace NitscheContact
     /// F in use: 'Contact/Friction coefficient' times the scale of the
     /// driver's friction continuation
     double                     friction = 0.;
+    /// the obstacle compliance of the cycle ('Contact/Obstacle compliance')
+    double                     kappa = 0.;
     /// friction switched on or off since theta_matrix was built
     bool                       theta_matrix_stale = false;
     double                     last_contact_energy = 0.;

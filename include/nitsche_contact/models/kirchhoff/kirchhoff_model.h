@@ -385,7 +385,7 @@ namespace NitscheContact
     // ----- the "Kirchhoff" subsection
     Formulation  formulation;
     double       alpha_D;  ///< alpha D (dimensionless)
-    double       kappa;    ///< obstacle compliance
+    double       kappa = 0.; ///< obstacle compliance of the cycle
     unsigned int n_quadrature;
     std::unique_ptr<dealii::FunctionParser<2>> exact_value, exact_gradient,
       exact_hessian;

@@ -213,7 +213,7 @@ namespace NitscheContact
     double                  tension = 1.;
     unsigned int            degree  = 1;
     double                  alpha   = 0.01;///< r = T / (alpha h_K^2)
-    double                  kappa   = 0.;  ///< obstacle compliance
+    double                  kappa   = 0.;  ///< obstacle compliance of the cycle
     std::string             contact_rule_name;
     unsigned int            contact_points_per_direction = 3;
     std::unique_ptr<dealii::FunctionParser<2>> load_function, exact_solution;

@@ -218,8 +218,6 @@ namespace NitscheContact
       /// factorization' of the direct solver
       bool         reuse_factorization     = true;
       bool         symmetric_factorization = true;
-      /// 'Obstacle compliance kappa' >= 0 (0: rigid obstacle)
-      double       obstacle_compliance = 0.;
       /// no warnings on the console (a plate solved inside another model,
       /// 'Elasticity/Plate predictor')
       bool         quiet            = false;
@@ -371,7 +369,8 @@ namespace NitscheContact
     /// Sums and maxima over the contact points of the accepted iterate.
     struct ContactStatistics
     {
-      double               area = 0., force = 0., tangential_force = 0.;
+      double               area = 0., force = 0., tangential_force = 0.,
+                           max_pressure = 0.;
       dealii::Tensor<1, 3> tangential_resultant;
       double               max_ratio = 0., max_slip = 0., max_membrane = 0.,
              max_contact_slip = 0.;
@@ -395,6 +394,8 @@ namespace NitscheContact
     /// factor 1/(1 + kappa r) on the Nitsche contact stress (1: rigid
     /// obstacle; 'Obstacle compliance kappa')
     double lambda_scale = 1.;
+    /// the obstacle compliance of the cycle ('Contact/Obstacle compliance')
+    double kappa = 0.;
     /// the last theta-term bias warning printed (repeated only when h_n,
     /// and with it the bias, changes)
     std::string bias_warning;

@@ -1,0 +1,50 @@
+#!/bin/bash
+# 'Contact/Obstacle compliance = auto' (the default) against the rigid
+# obstacle (0) on the large cases of the paper's test, one run after the
+# other on this machine:
+#   kirchhoff   parameters/paper_kirchhoff.prm over 6 cycles (16^2 -> 512^2,
+#               1,052,676 DoFs), multigrid, Newton tolerance 1e-9
+#   mindlin     parameters/paper_mindlin_large.prm (1,232,643 DoFs)
+#   3d          parameters/paper_3d_large.prm on 2 MPI ranks (281,961 DoFs)
+# Prints a markdown table: Newton iterations per cycle, wall-clock seconds
+# (/usr/bin/time), the reaction and the probe deflections of the last cycle,
+# and the time ratio auto/rigid.
+#   usage: benchmarks/compliance.sh [BUILD_DIR] [CASES]
+# CASES is a list like "kirchhoff mindlin 3d" (the default). Build in
+# Release first.
+set -e
+here=$(cd "$(dirname "$0")/.." && pwd)
+build=${1:-$here/build}
+cases=${2:-"kirchhoff mindlin 3d"}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+echo "| case | compliance | kappa | Newton iterations per cycle | wall [s] | reaction | probes |"
+echo "|---|---|---|---|---|---|---|"
+for case in $cases; do
+  case "$case" in
+    kirchhoff)
+      prm="$here/parameters/paper_kirchhoff.prm"; launch=""
+      extra="subsection Geometry\n  set Number of cycles = 6\nend\nsubsection Nonlinear solver\n  set Tolerance = 1e-9\nend\nsubsection Kirchhoff\n  subsection Linear solver\n    set Type = multigrid\n  end\nend" ;;
+    mindlin) prm="$here/parameters/paper_mindlin_large.prm"; launch=""; extra="" ;;
+    3d) prm="$here/parameters/paper_3d_large.prm"; launch="mpirun -np 2"; extra="" ;;
+    *) echo "benchmarks/compliance.sh: unknown case '$case' (kirchhoff, mindlin, 3d)" >&2; exit 1 ;;
+  esac
+  for compliance in 0 auto; do
+    out="$work/$case-$compliance"
+    { cat "$prm"; printf "\n$extra\n"
+      printf 'subsection Contact\n  set Obstacle compliance = %s\nend\n' "$compliance"
+      printf 'subsection Output\n  set Directory = %s\n  set Format = none\nend\n' "$out"; } > "$out.prm"
+    /usr/bin/time -f "%e" -o "$out.time" $launch "$build/nitsche-contact" "$out.prm" > "$out.log" 2>&1 ||
+      { tail -20 "$out.log"; exit 1; }
+    python3 - "$out/summary.json" "$out.time" "$case" "$compliance" <<'PY'
+import json, sys
+s = json.load(open(sys.argv[1]))
+c = s["cycles"]
+wall = float(open(sys.argv[2]).read().split()[-1])
+print("| %s | %s | %.3g | %s | %.1f | %.7f | %s |" % (
+    sys.argv[3], sys.argv[4], c[-1]["obstacle_compliance"],
+    ", ".join(str(x["nonlinear_iterations"]) for x in c), wall, c[-1]["contact_force"],
+    ", ".join("%.7f" % w for w in c[-1]["probes"])))
+PY
+  done
+done
