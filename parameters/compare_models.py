@@ -5,6 +5,7 @@ and the figures.
 
   python3 parameters/compare_models.py [--exe build/nitsche-contact]
                                        [--out results/comparison] [--quick]
+                                       [--compliance VALUE] [--more-cycles N]
 
 Runs parameters/{paper_3d, paper_mindlin, paper_mindlin_mitc9,
 paper_kirchhoff, kirchhoff_nitsche}.prm with a common output block (same probes, profile line
@@ -17,7 +18,10 @@ writes into --out:
   fields.png                      each model's deflection field with the
                                   region where the plate lies on the
                                   obstacle (paper's Figures 1-3)
---quick uses one coarse cycle per model (for tests).
+--quick uses one coarse cycle per model (for tests). --compliance sets
+'Contact/Obstacle compliance' in every run (e.g. 0 for the rigid obstacle;
+by default each file's own, 'auto' unless it says otherwise). --more-cycles
+N refines every run N more times than its file (the next finer meshes).
 """
 import argparse
 import csv
@@ -45,6 +49,10 @@ def main():
     ap.add_argument("--out", default="results/comparison")
     ap.add_argument("--quick", action="store_true")
     ap.add_argument("--np", type=int, default=1, help="MPI ranks for the 3D model")
+    ap.add_argument("--compliance", default=None,
+                    help="'Contact/Obstacle compliance' of every run")
+    ap.add_argument("--more-cycles", type=int, default=0,
+                    help="refinement cycles added to each file's")
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
 
@@ -58,6 +66,13 @@ def main():
         text += "  set Field grid points = 81\n  set Print timings = true\nend\n"
         if args.quick:
             text += "subsection Geometry\n  set Number of cycles = 1\nend\n"
+        elif args.more_cycles > 0:
+            cycles = [l for l in text.splitlines()
+                      if l.strip().startswith("set Number of cycles")]
+            n = int(cycles[-1].split("=")[1]) + args.more_cycles
+            text += "subsection Geometry\n  set Number of cycles = %d\nend\n" % n
+        if args.compliance is not None:
+            text += "subsection Contact\n  set Obstacle compliance = %s\nend\n" % args.compliance
         prm_out = os.path.join(args.out, key + ".prm")
         with open(prm_out, "w") as f:
             f.write(text)

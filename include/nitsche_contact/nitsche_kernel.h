@@ -93,7 +93,7 @@ namespace NitscheContact
     double       friction = 0.; ///< Coulomb coefficient F >= 0
     /// Factor c in Lambda_n = c [s_n]_- (and in its derivative). 1 for a
     /// rigid obstacle; 1/(1 + kappa r) for an obstacle of compliance
-    /// kappa >= 0 (Kirchhoff model, doc/theory.md section 4.5).
+    /// kappa >= 0 ('Contact/Obstacle compliance', doc/formulations.md).
     double       lambda_scale = 1.;
   };
 

@@ -144,41 +144,34 @@ namespace NitscheContact
     void
     check_first_mesh_size(unsigned int children_per_refinement) const;
 
-    /// The compliance kappa of the obstacle for a run whose finest cells
-    /// have the compliance `cell_compliance` (the deflection per pressure
-    /// of the body at the scale h of such a cell, h = finest_cell_size():
-    /// h^4/D for a plate, h^2/T for a membrane): the number of
-    /// 'Contact/Obstacle compliance', or for 'auto'
-    /// auto_compliance_fraction * cell_compliance. One value for all
-    /// cycles: the cycles solve one problem, and nested iteration starts
-    /// each from a solution of it.
+    /// The compliance kappa of the obstacle: the number of 'Contact/
+    /// Obstacle compliance', or for 'auto' the compliance `length_compliance`
+    /// of the body at the scale of regularisation_length() (l^4/D for a
+    /// plate, l^2/T for a membrane): the elastic layer whose reaction spreads
+    /// over that length (doc/formulations.md, "The obstacle compliance").
     double
-    compliance_on_mesh(double cell_compliance) const
+    compliance_on_mesh(double length_compliance) const
     {
-      return obstacle_compliance ? *obstacle_compliance :
-                                   auto_compliance_fraction * cell_compliance;
+      return obstacle_compliance ? *obstacle_compliance : length_compliance;
     }
-    /// The longest in-plane cell side of the last cycle's uniform mesh.
+    /// The length l over which the layer of 'auto' spreads the reaction:
+    /// a thousandth of the plate's larger side.
     double
-    finest_cell_size() const
+    regularisation_length() const
     {
-      return std::max(length_x / subdivisions[0], length_y / subdivisions[1]) /
-             std::pow(2., double(initial_refinement + n_cycles - 1));
+      return 1e-3 * std::max(length_x, length_y);
     }
     /// 'Contact/Obstacle compliance' for the log: the number, or "auto,
-    /// 0.01 <cell_compliance>, h of the last cycle".
+    /// <length_compliance> with l = ...".
     std::string
-    compliance_text(const std::string &cell_compliance) const
+    compliance_text(const std::string &length_compliance) const
     {
       return obstacle_compliance ?
                number_to_string(*obstacle_compliance) :
-               "auto, " + number_to_string(auto_compliance_fraction) + " " +
-                 cell_compliance + " with h the cell side of the last cycle";
+               "auto, " + length_compliance + " with l = " +
+                 number_to_string(regularisation_length()) +
+                 " (a thousandth of the plate)";
     }
-    /// kappa / (h^4/D) of 'auto': the regularisation length (kappa D)^(1/4)
-    /// of a plate is then 0.23 h, (kappa T)^(1/2) of a membrane 0.055 h
-    /// (doc/formulations.md, "The obstacle compliance").
-    static constexpr double auto_compliance_fraction = 0.003;
     /// Whether the obstacle is rigid up to the automatic compliance (not a
     /// positive number given by the user): an obstacle above a supported
     /// edge then leaves the problem without a solution.

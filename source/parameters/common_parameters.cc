@@ -156,15 +156,15 @@ namespace NitscheContact
                     "in the contact law p >= 0, g - u_n + kappa p >= 0, p (g "
                     "- u_n + kappa p) = 0: an elastic (Winkler) layer of "
                     "stiffness 1/kappa on the obstacle. A number >= 0 is "
-                    "used as given; 0 is the rigid obstacle. 'auto' takes on "
-                    "each cycle a fixed fraction of the body's own "
-                    "compliance at the scale of a cell (h^4/D for the "
-                    "plates, h^2/T for the membrane; doc/formulations.md "
-                    "section 6), which keeps the number of Newton "
-                    "iterations from growing with the mesh and changes the "
-                    "solution by less than the discretisation error; the "
-                    "log and summary.json give the value and the largest "
-                    "penetration it causes.");
+                    "used as given; 0 is the rigid obstacle. 'auto' is the "
+                    "layer that spreads the obstacle's reaction over a "
+                    "thousandth l of the plate's larger side: kappa = l^4/D "
+                    "for the plates (3D: max(l^4/D, l/E)), l^2/T for the "
+                    "membrane. Once the mesh resolves l the number of Newton "
+                    "iterations stops growing with the mesh; the solution "
+                    "moves by at most the penetration kappa p, which the log "
+                    "and summary.json give on every cycle (doc/formulations."
+                    "md, 'The obstacle compliance').");
       prm.leave_subsection();
     }
 

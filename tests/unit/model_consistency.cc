@@ -259,6 +259,30 @@ namespace
             << std::endl;
     if (en_err > 1e-6)
       out << "  relative error " << en_err << std::endl;
+
+    // 3. the line search's slope from point values against the assembled
+    //    R(U0 + t dU).dU along the Newton direction dU from U0
+    if constexpr (std::is_base_of_v<FastLineSlope, Model>)
+      {
+        model.iterate() = U0;
+        model.assemble(NonlinearScheme::newton, true);
+        model.solve_linear();
+        model.prepare_line_slope();
+        double slope_err = 0.;
+        for (const double t : {0.25, 0.5, 1.})
+          {
+            model.apply_increment(t);
+            model.assemble(NonlinearScheme::newton, false);
+            const double assembled = model.energy_slope();
+            slope_err = std::max(slope_err,
+                                 std::abs(model.line_slope(t) - assembled) /
+                                   std::max(std::abs(assembled), 1e-300));
+          }
+        out << name << ": line slope vs R(U + t dU).dU: "
+            << (slope_err <= 1e-8 ? "ok" : "FAILED") << std::endl;
+        if (slope_err > 1e-8)
+          out << "  relative error " << slope_err << std::endl;
+      }
   }
 
   // The Mindlin bottom-face kinematics against their closed form (doc/

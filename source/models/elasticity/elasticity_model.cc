@@ -70,7 +70,7 @@ namespace NitscheContact
       {"r", "gamma0 E / h_n, h_n = |K|/|F| (cell height normal to the "
             "contact face)"},
       {"friction", s(prm.friction)},
-      {"obstacle compliance kappa", prm.compliance_text("max(h^4/D, h/E)")},
+      {"obstacle compliance kappa", prm.compliance_text("max(l^4/D, l/E)")},
       {"contact quadrature",
        std::to_string(contact_quadrature_points) + "x" +
          std::to_string(contact_quadrature_points) +

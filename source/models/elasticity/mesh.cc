@@ -234,12 +234,12 @@ namespace NitscheContact
     step_correction.reinit(locally_owned, comm);
     previous_status.clear();
     previous_q.clear();
-    // the body's compliance at the scale h of the last cycle's in-plane
-    // cells: that of a plate, h^4/D, where h is large against the
-    // thickness, that of an elastic half-space, h/E, where it is small
-    const double h = prm.finest_cell_size();
+    // the body's compliance at the scale l of the regularisation: that of
+    // a plate, l^4/D, where l is large against the thickness, that of an
+    // elastic half-space, l/E, where it is small
+    const double l = prm.regularisation_length();
     kappa          = prm.compliance_on_mesh(
-      std::max(std::pow(h, 4) / prm.bending_stiffness(), h / prm.youngs_modulus));
+      std::max(std::pow(l, 4) / prm.bending_stiffness(), l / prm.youngs_modulus));
   }
 
   void

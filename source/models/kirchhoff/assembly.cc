@@ -307,10 +307,10 @@ namespace NitscheContact
   {
     // d/dU of (1/(2r)) (c [s_n]_-^2 - sigma_n^2), c = lambda_scale, in the
     // direction N_i is (1/r)(Lambda_n (dsigma_n - r du_n) - sigma_n dsigma_n),
-    // which is the theta = 1 kernel residual. With c = 1 this is the
-    // kernel's contact_energy_density(); written out here because the
-    // compliant obstacle has c != 1 and the pure penalty has theta = 0 in
-    // its kernel input (and sigma_n = 0).
+    // which is the theta = 1 kernel residual: the kernel's
+    // contact_energy_density(), written out here because the pure penalty
+    // has theta = 0 in its kernel input (and sigma_n = 0), for which the
+    // kernel returns NaN.
     const double sn_minus = negative_part(st.s_n);
     return (st.lambda_n * sn_minus - in.sigma_n * in.sigma_n) / (2. * in.r);
   }

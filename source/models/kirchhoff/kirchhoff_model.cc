@@ -101,7 +101,7 @@ namespace NitscheContact
                                   prm.thickness));
       }
     d.emplace_back("obstacle compliance kappa",
-                   prm.compliance_text("h^4/D"));
+                   prm.compliance_text("l^4/D"));
     d.emplace_back("bending stiffness D", number_to_string(D));
     d.emplace_back("obstacle convention",
                    prm.obstacle_level_is_midplane ?

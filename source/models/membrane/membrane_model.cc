@@ -81,7 +81,7 @@ namespace NitscheContact
       {"tension T", number_to_string(tension)},
       {"alpha", number_to_string(alpha)},
       {"r", "T/(alpha h_K^2), h_K = longest cell side"},
-      {"obstacle compliance kappa", prm.compliance_text("h^2/T")},
+      {"obstacle compliance kappa", prm.compliance_text("l^2/T")},
       {"obstacle convention", "w >= z_obs (a membrane has no thickness)"},
       {"contact quadrature",
        contact_rule_name + ", " +
@@ -199,7 +199,7 @@ namespace NitscheContact
     if (bad_heights > 0)
       throw InputError(obstacle.non_finite_message(bad_heights, &bad_point));
     kappa =
-      prm.compliance_on_mesh(std::pow(prm.finest_cell_size(), 2) / tension);
+      prm.compliance_on_mesh(std::pow(prm.regularisation_length(), 2) / tension);
 
     inverse_constant = gsv_inverse_constant();
     const double bound =

@@ -2,7 +2,6 @@
 // and its checks.
 #include <nitsche_contact/models/common/model_tools.h>
 #include <nitsche_contact/models/membrane/membrane_model.h>
-#include <nitsche_contact/moved_entries.h>
 
 #include <cmath>
 
@@ -53,8 +52,6 @@ namespace NitscheContact
         "contact points are the vertices, the nodes of Q1.");
     }
     prm.leave_subsection();
-    declare_moved_entry("Membrane/Obstacle compliance kappa",
-                        "use 'Obstacle compliance' in subsection 'Contact'");
   }
 
 
@@ -85,8 +82,6 @@ namespace NitscheContact
     if (!(alpha > 0.) || !std::isfinite(alpha))
       bad_value("Membrane/Stabilisation alpha", number_to_string(alpha),
                 "a finite number > 0");
-    if (prm.subdivisions.size() < 2)
-      bad_value("Geometry/Subdivisions", "", "expected 'nx, ny'");
     if (prm.subdivisions.size() > 2 && prm.subdivisions[2] != 1)
       bad_value("Geometry/Subdivisions",
                 std::to_string(prm.subdivisions[0]) + ", " +

@@ -148,7 +148,7 @@ namespace NitscheContact
                                                            " Gauss"));
     d.emplace_back("linear solver", settings.linear_solver);
     d.emplace_back("obstacle compliance kappa",
-                   prm.compliance_text("h^4/D"));
+                   prm.compliance_text("l^4/D"));
     return d;
   }
 
@@ -262,7 +262,7 @@ namespace NitscheContact
                          prm.thickness :
                          std::max(hx, hy);
     r = prm.gamma0 * prm.youngs_modulus / h_n;
-    kappa = prm.compliance_on_mesh(std::pow(prm.finest_cell_size(), 4) /
+    kappa = prm.compliance_on_mesh(std::pow(prm.regularisation_length(), 4) /
                                    prm.bending_stiffness());
     lambda_scale = 1. / (1. + kappa * r);
     {

@@ -392,7 +392,7 @@ namespace NitscheContact
     double mu;     ///< shear modulus
     double r;      ///< Nitsche parameter gamma0 E / h_n
     /// factor 1/(1 + kappa r) on the Nitsche contact stress (1: rigid
-    /// obstacle; 'Obstacle compliance kappa')
+    /// obstacle; 'Contact/Obstacle compliance')
     double lambda_scale = 1.;
     /// the obstacle compliance of the cycle ('Contact/Obstacle compliance')
     double kappa = 0.;
