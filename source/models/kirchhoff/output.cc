@@ -2,6 +2,7 @@
 // mean contact pressure, the fraction of points in contact and the gap.
 #include <deal.II/numerics/data_out.h>
 
+#include <nitsche_contact/models/common/postprocessing_tools.h>
 #include <nitsche_contact/models/kirchhoff/kirchhoff_model.h>
 
 #include <limits>
@@ -25,28 +26,17 @@ namespace NitscheContact
     for (unsigned int c = 0; c < cells.size(); ++c)
       {
         cell_coefficients(solution, c, u);
-        // (the gap: mean over the points with an obstacle below, NaN in
-        // a cell without any, as where a sphere does not reach)
-        double p = 0., a = 0., g = 0., area = 0., g_area = 0.;
+        CellContactMeans means;
         for (unsigned int q = 0; q < nq; ++q)
           {
             const PointInput in = point_input(c, q, u);
-            const PointState st =
-              evaluate_contact_point(in, NonlinearScheme::newton);
-            p += -st.lambda_n * kit.JxW[q];
-            a += (st.lambda_n < 0. ? 1. : 0.) * kit.JxW[q];
-            if (ObstacleSurface::has_obstacle(in.gap))
-              {
-                g += (in.gap - in.u_n) * kit.JxW[q];
-                g_area += kit.JxW[q];
-              }
-            area += kit.JxW[q];
+            means.add(in, evaluate_contact_point(in, NonlinearScheme::newton),
+                      kit.JxW[q]);
           }
         const unsigned int k = cells[c]->active_cell_index();
-        pressure[k]          = p / area;
-        status[k]            = a / area;
-        gap[k] = g_area > 0. ? g / g_area :
-                               std::numeric_limits<float>::quiet_NaN();
+        pressure[k]          = means.pressure();
+        status[k]            = means.contact_fraction();
+        gap[k]               = means.gap();
       }
 
     DataOut<2> data_out;

@@ -255,9 +255,7 @@ namespace NitscheContact
     // (doc/membrane.md).
     const unsigned int n = fe->n_dofs_per_cell();
     const auto         cell = dof_handler.begin_active();
-    double             h    = 0.;
-    for (unsigned int l = 0; l < GeometryInfo<2>::lines_per_cell; ++l)
-      h = std::max(h, cell->line(l)->diameter());
+    const double       h    = longest_side(cell);
     FullMatrix<double> s(n, n), a(n, n);
     FEValues<2>        contact(mapping, *fe, contact_quadrature,
                         update_hessians | update_JxW_values);

@@ -161,9 +161,7 @@ namespace NitscheContact
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         const unsigned int c = cell->active_cell_index();
-        double             h = 0.;
-        for (unsigned int l = 0; l < GeometryInfo<2>::lines_per_cell; ++l)
-          h = std::max(h, cell->line(l)->diameter());
+        const double       h = longest_side(cell);
         cell_r[c] = tension / (alpha * h * h);
 
         contact_values.reinit(cell);
@@ -255,8 +253,7 @@ namespace NitscheContact
   {
     double h = 0.;
     for (const auto &cell : triangulation.active_cell_iterators())
-      for (unsigned int l = 0; l < GeometryInfo<2>::lines_per_cell; ++l)
-        h = std::max(h, cell->line(l)->diameter());
+      h = std::max(h, longest_side(cell));
     return {dof_handler.n_dofs(), h};
   }
 

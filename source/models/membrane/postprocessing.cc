@@ -202,25 +202,14 @@ namespace NitscheContact
         contact.reinit(cell);
         cell->get_dof_values(solution, u);
         cell_point_inputs(contact, c, u, inputs);
-        double p = 0., a = 0., g = 0., area = 0., g_area = 0.;
+        CellContactMeans means;
         for (unsigned int q = 0; q < contact_quadrature.size(); ++q)
-          {
-            const PointState st =
-              evaluate_contact_point(inputs[q], NonlinearScheme::newton);
-            const double JxW = contact.JxW(q);
-            p += -st.lambda_n * JxW;
-            a += (st.lambda_n < 0. ? 1. : 0.) * JxW;
-            if (ObstacleSurface::has_obstacle(inputs[q].gap))
-              {
-                g += (inputs[q].gap - inputs[q].u_n) * JxW;
-                g_area += JxW;
-              }
-            area += JxW;
-          }
-        pressure[c] = p / area;
-        fraction[c] = a / area;
-        gap[c]      = g_area > 0. ? g / g_area :
-                                    std::numeric_limits<float>::quiet_NaN();
+          means.add(inputs[q],
+                    evaluate_contact_point(inputs[q], NonlinearScheme::newton),
+                    contact.JxW(q));
+        pressure[c] = means.pressure();
+        fraction[c] = means.contact_fraction();
+        gap[c]      = means.gap();
       }
 
     DataOut<2> data_out;

@@ -9,6 +9,7 @@
 
 #include <nitsche_contact/contact_records.h>
 #include <nitsche_contact/nitsche_kernel.h>
+#include <nitsche_contact/parameters/obstacle_surface.h>
 
 #include <limits>
 #include <optional>
@@ -55,6 +56,47 @@ namespace NitscheContact
   private:
     unsigned int nx = 1, ny = 1;
     double       length_x = 1., length_y = 1.;
+  };
+
+  /// The means over the contact points of one cell that the plate models
+  /// write as cell data: the contact pressure, the fraction of the cell in
+  /// contact, and the gap over the points with an obstacle below (NaN in a
+  /// cell without any, as where a sphere does not reach).
+  class CellContactMeans
+  {
+  public:
+    void
+    add(const PointInput &in, const PointState &st, const double JxW)
+    {
+      pressure_integral += -st.lambda_n * JxW;
+      contact_measure += (st.lambda_n < 0. ? JxW : 0.);
+      if (ObstacleSurface::has_obstacle(in.gap))
+        {
+          gap_integral += (in.gap - in.u_n) * JxW;
+          gap_measure += JxW;
+        }
+      measure += JxW;
+    }
+    double
+    pressure() const
+    {
+      return pressure_integral / measure;
+    }
+    double
+    contact_fraction() const
+    {
+      return contact_measure / measure;
+    }
+    double
+    gap() const
+    {
+      return gap_measure > 0. ? gap_integral / gap_measure :
+                                std::numeric_limits<double>::quiet_NaN();
+    }
+
+  private:
+    double pressure_integral = 0., contact_measure = 0., gap_integral = 0.,
+           gap_measure = 0., measure = 0.;
   };
 
   /// Contact area and force (the integrals of the set where the pressure

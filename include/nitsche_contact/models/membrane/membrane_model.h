@@ -39,6 +39,7 @@
 #include <nitsche_contact/parameters.h>
 #include <nitsche_contact/solvers/reused_factorization.h>
 
+#include <algorithm>
 #include <memory>
 
 namespace NitscheContact
@@ -167,6 +168,17 @@ namespace NitscheContact
     check_parameters() const;
 
     // ----- mesh and space (membrane_model.cc)
+
+    /// h_K, the longest side of a cell.
+    template <class CellIterator>
+    static double
+    longest_side(const CellIterator &cell)
+    {
+      double h = 0.;
+      for (unsigned int l = 0; l < dealii::GeometryInfo<2>::lines_per_cell; ++l)
+        h = std::max(h, cell->line(l)->diameter());
+      return h;
+    }
 
     void
     make_grid();
