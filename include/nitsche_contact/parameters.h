@@ -15,7 +15,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <memory>
 #include <new>
 #include <optional>
@@ -73,7 +72,8 @@ namespace NitscheContact
     double gamma0   = 20.;
     double friction = 0.;
     /// 'Contact/Obstacle compliance': the number given, none for 'auto'
-    /// (each model then takes obstacle_compliance() of its mesh)
+    /// (each model then calls obstacle_compliance_for() with its body's
+    /// compliance at regularisation_length())
     std::optional<double> obstacle_compliance;
     /// theta = 1 without friction: the Nitsche terms are the gradient of
     /// a contact energy, so the Newton matrix is symmetric (the Hessian of
@@ -150,7 +150,7 @@ namespace NitscheContact
     /// plate, l^2/T for a membrane): the elastic layer whose reaction spreads
     /// over that length (doc/formulations.md, "The obstacle compliance").
     double
-    compliance_on_mesh(double length_compliance) const
+    obstacle_compliance_for(double length_compliance) const
     {
       return obstacle_compliance ? *obstacle_compliance : length_compliance;
     }

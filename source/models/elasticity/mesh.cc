@@ -238,7 +238,7 @@ namespace NitscheContact
     // a plate, l^4/D, where l is large against the thickness, that of an
     // elastic half-space, l/E, where it is small
     const double l = prm.regularisation_length();
-    kappa          = prm.compliance_on_mesh(
+    kappa          = prm.obstacle_compliance_for(
       std::max(std::pow(l, 4) / prm.bending_stiffness(), l / prm.youngs_modulus));
   }
 

@@ -30,7 +30,7 @@ namespace NitscheContact
   void
   KirchhoffModel::set_kernel_parameters()
   {
-    kappa = prm.compliance_on_mesh(std::pow(prm.regularisation_length(), 4) / D);
+    kappa = prm.obstacle_compliance_for(std::pow(prm.regularisation_length(), 4) / D);
     if (formulation == Formulation::gsv)
       {
         if (alpha_D > 0.)

@@ -197,7 +197,7 @@ namespace NitscheContact
     if (bad_heights > 0)
       throw InputError(obstacle.non_finite_message(bad_heights, &bad_point));
     kappa =
-      prm.compliance_on_mesh(std::pow(prm.regularisation_length(), 2) / tension);
+      prm.obstacle_compliance_for(std::pow(prm.regularisation_length(), 2) / tension);
 
     inverse_constant = gsv_inverse_constant();
     const double bound =

@@ -262,7 +262,7 @@ namespace NitscheContact
                          prm.thickness :
                          std::max(hx, hy);
     r = prm.gamma0 * prm.youngs_modulus / h_n;
-    kappa = prm.compliance_on_mesh(std::pow(prm.regularisation_length(), 4) /
+    kappa = prm.obstacle_compliance_for(std::pow(prm.regularisation_length(), 4) /
                                    prm.bending_stiffness());
     lambda_scale = 1. / (1. + kappa * r);
     {
