@@ -69,7 +69,18 @@ namespace NitscheContact
 
     // "Contact"
     double theta    = 1.;
+    /// 'Contact/Nitsche gamma0': the number given, none for 'auto'
+    std::optional<double> gamma0_given;
+    /// gamma0 in use: the number given, for 'auto' 20 unless the model
+    /// calls use_model_gamma0()
     double gamma0   = 20.;
+    /// for 'Nitsche gamma0 = auto': gamma0 = value (a model's own choice)
+    void
+    use_model_gamma0(const double value)
+    {
+      if (!gamma0_given)
+        gamma0 = value;
+    }
     double friction = 0.;
     /// 'Contact/Obstacle compliance': the number given, none for 'auto'
     /// (each model then calls obstacle_compliance_for() with its body's

@@ -24,7 +24,26 @@ namespace NitscheContact
 
   namespace
   {
-
+    /// The entry 'name' of the current subsection: none for 'auto', else a
+    /// finite number > 0 (>= 0 with zero_allowed), else an InputError
+    /// naming 'entry' and 'allowed'.
+    std::optional<double>
+    auto_or_number(ParameterHandler  &prm,
+                   const std::string &name,
+                   const std::string &entry,
+                   const bool         zero_allowed,
+                   const std::string &allowed)
+    {
+      const std::string text = Utilities::trim(prm.get(name));
+      if (text == "auto")
+        return std::nullopt;
+      char        *end = nullptr;
+      const double v   = std::strtod(text.c_str(), &end);
+      if (text.empty() || end == nullptr || *end != '\0' ||
+          !std::isfinite(v) || v < 0. || (v == 0. && !zero_allowed))
+        bad_value(entry, text, allowed);
+      return v;
+    }
 
     EdgeCondition
     parse_edge(const std::string &s, const std::string &entry)
@@ -145,10 +164,15 @@ namespace NitscheContact
                     "The Nitsche variant: 1 (symmetric, with an energy), 0 "
                     "(non-symmetric) or -1 (skew-symmetric, stable for any "
                     "gamma0).");
-      declare_entry(prm, "Nitsche gamma0", "20", Patterns::Double(),
+      declare_entry(prm, "Nitsche gamma0", "auto", Patterns::Anything(),
                     "The dimensionless Nitsche parameter; the penalty is r "
                     "= gamma0 E / h. theta = 1 needs gamma0 above the trace "
-                    "constant of the element (doc/theory.md).");
+                    "constant of the element and contact points "
+                    "(doc/theory.md). 'auto' is 60 in the 3D model (above "
+                    "the trace constants 12.1 (Q1) and 33.7 (Q2) of its "
+                    "Gauss-Lobatto contact points on the paper's flat "
+                    "cells) and 20 in the plate models; a number > 0 is "
+                    "used as given.");
       declare_entry(prm, "Friction coefficient", "0", Patterns::Double(),
                     "The Coulomb friction coefficient F (0: frictionless).");
       declare_entry(prm, "Obstacle compliance", "auto", Patterns::Anything(),
@@ -553,26 +577,16 @@ namespace NitscheContact
       else
         bad_value("Contact/Nitsche theta", t, "allowed are 1, 0, -1");
     }
-    gamma0 = prm.get_double("Nitsche gamma0");
-    if (!(gamma0 > 0.))
-      bad_value("Contact/Nitsche gamma0", number_to_string(gamma0), "must be > 0");
+    gamma0_given = auto_or_number(prm, "Nitsche gamma0", "Contact/Nitsche gamma0",
+                                  false, "'auto' or a number > 0");
+    gamma0 = gamma0_given.value_or(20.);
     friction = prm.get_double("Friction coefficient");
     if (!(friction >= 0.))
       bad_value("Contact/Friction coefficient", number_to_string(friction),
                 "must be >= 0");
-    const std::string compliance = Utilities::trim(prm.get("Obstacle compliance"));
-    if (compliance == "auto")
-      obstacle_compliance.reset();
-    else
-      {
-        char        *end = nullptr;
-        const double v   = std::strtod(compliance.c_str(), &end);
-        if (compliance.empty() || end == nullptr || *end != '\0' ||
-            !std::isfinite(v) || v < 0.)
-          bad_value("Contact/Obstacle compliance", compliance,
-                    "'auto' or a number >= 0");
-        obstacle_compliance = v;
-      }
+    obstacle_compliance =
+      auto_or_number(prm, "Obstacle compliance", "Contact/Obstacle compliance",
+                     true, "'auto' or a number >= 0");
   }
   prm.leave_subsection();
   }

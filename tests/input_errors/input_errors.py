@@ -305,7 +305,9 @@ CASES = [
     ("obstacle height not finite between the grid points of the input check",
      "subsection Geometry\n  set Subdivisions = 8, 8, 1\nend\n"
      "subsection Obstacle\n  set Type = function\n"
-     "  set Height = -1 + 0*sqrt((x-5.05)^2 - 0.0016)\nend",
+     "  set Height = -1 + 0*sqrt((x-5.05)^2 - 0.0016)\nend\n"
+     # Gauss points, one of which lies in the strip |x - 5.05| < 0.04
+     "subsection Elasticity\n  set Contact quadrature rule = gauss\nend",
      ["Obstacle/Height", "sqrt((x-5.05)^2 - 0.0016)", "not a finite number at",
       "contact quadrature point"]),
     ("Young's modulus overflowing the stiffness",

@@ -93,13 +93,19 @@ namespace
            "subsection Contact\n  set Nitsche theta = " +
            std::to_string(int(theta)) +
            "\n  set Friction coefficient = " + std::to_string(friction) +
-           "\n  set Obstacle compliance = 0\nend\n"
+           "\n  set Obstacle compliance = 0\n  set Nitsche gamma0 = 20\nend\n"
            "subsection Output\n  set Format = none\n"
            "  set Directory = output-dir\nend\n"
            // the generalized Jacobian everywhere (the stick step of a
            // reversed slip is a different matrix by design)
            "subsection Nonlinear solver\n"
-           "  set Stick step on slip reversal = false\nend\n" +
+           "  set Stick step on slip reversal = false\nend\n"
+           // the 3D start without the plate, which the driver solves; Gauss
+           // contact points: at the nodes an active point penetrates by
+           // only p/r ~ 1e-10, closer to its kink than any difference step
+           "subsection Elasticity\n  set Plate predictor = false\n"
+           "  set Contact quadrature rule = gauss\nend\n"
+           "subsection Mindlin\n  set Contact quadrature rule = gauss\nend\n" +
            extra;
   }
 
@@ -428,7 +434,9 @@ namespace
             "  set Obstacle compliance = 0\nend\n"
             "subsection Elasticity\n  set Polynomial degree = " +
             std::to_string(degree) +
-            "\n  subsection Linear solver\n    set Type = direct\n  end\nend\n"
+            "\n  set Plate predictor = false\n"
+            "  set Contact quadrature rule = gauss\n"
+            "  subsection Linear solver\n    set Type = direct\n  end\nend\n"
             "subsection Output\n  set Format = none\n"
             "  set Directory = output-dir\nend\n");
           ElasticityModel &model = made.model;

@@ -18,22 +18,43 @@ def parse_args():
     return p.parse_args()
 
 
-def run(args, name, prm_text, np=1, expect_status=0, output_format="none", rigid=True):
+# The discrete problem most tests check: the rigid obstacle, Gauss contact
+# points, gamma0 = 20 and the nested start (the program's defaults choose
+# the obstacle compliance, the nodes as contact points and the plate
+# predictor for speed).
+PINNED = """subsection Contact
+  set Obstacle compliance = 0
+  set Nitsche gamma0 = 20
+end
+subsection Elasticity
+  set Contact quadrature rule = gauss
+  set Plate predictor = false
+end
+subsection Mindlin
+  set Contact quadrature rule = gauss
+end
+"""
+
+
+def run(args, name, prm_text, np=1, expect_status=0, output_format="none", pinned=True):
     """Write <workdir>/<name>.prm (with Output/Directory set to <name>),
     run the program, and return (summary dict or None, stdout+stderr).
     expect_status: the exit status required, or a list of allowed ones;
     output_format: Output/Format (no graphical output by default);
-    rigid: the file starts with 'Contact/Obstacle compliance = 0', so that
-    the tests check the rigid discrete problem unless their text sets the
-    compliance (a later 'set' wins); False keeps the program's default."""
+    pinned: True: the file starts with PINNED, so that the tests check
+    that discrete problem unless their text sets an entry of it (a later
+    'set' wins); "rigid": only the rigid obstacle, the program's defaults
+    otherwise; False: the program's defaults."""
     os.makedirs(args.workdir, exist_ok=True)
     outdir = os.path.join(args.workdir, name)
     # no files of an earlier run may pass for this run's output
     shutil.rmtree(outdir, ignore_errors=True)
     prm_file = os.path.join(args.workdir, name + ".prm")
     with open(prm_file, "w") as f:
-        if rigid:
+        if pinned == "rigid":
             f.write("subsection Contact\n  set Obstacle compliance = 0\nend\n")
+        elif pinned:
+            f.write(PINNED)
         f.write(prm_text)
         f.write("\nsubsection Output\n  set Directory = %s\n  set Format = %s\nend\n"
                 % (outdir, output_format))

@@ -105,7 +105,7 @@ subsection Geometry
   set Number of cycles = 1
 end
 """
-one, _ = run(args, "one_cell_np1", ONE_CELL, rigid=False)  # as the run on 2 ranks below
+one, _ = run(args, "one_cell_np1", ONE_CELL, pinned=False)  # as the run on 2 ranks below
 outdir = os.path.join(args.workdir, "one_cell_np2_vtu")
 shutil.rmtree(outdir, ignore_errors=True)
 prm = os.path.join(args.workdir, "one_cell_np2_vtu.prm")

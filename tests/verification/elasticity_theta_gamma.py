@@ -68,6 +68,7 @@ subsection Elasticity
   set Top face = clamped
   set Refinement box = 0, 0, -0.5; 0.25, 0.25, -0.25
   set Local refinement steps = 3
+  set Contact quadrature rule = gauss
 end
 subsection Nonlinear solver
   set Tolerance = 1e-10

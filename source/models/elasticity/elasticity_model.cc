@@ -32,14 +32,14 @@ namespace NitscheContact
     // hexahedron refines into 8, r = gamma0 E / t, and the contact surface
     // is the bottom face
     prm.check_first_mesh_size(8);
+    prm.use_model_gamma0(60.);
     prm.check_magnitudes(prm.gamma0 * prm.youngs_modulus / prm.thickness);
     if (prm.obstacle_is_rigid())
       prm.check_obstacle_below_supported_edges(-0.5 * prm.thickness);
     friction = prm.friction;
     read_parameters(ph);
     make_load_functions();
-    if (with_plate_predictor)
-      make_plate_predictor();
+    make_plate_predictor();
     if (!prm.exact_solution.empty())
       {
         exact_solution =
@@ -85,6 +85,9 @@ namespace NitscheContact
       d.emplace_back("start",
                      "plate predictor (Mindlin MITC4, theta = 1, gamma0 = "
                      "200, frictionless)");
+    else if (!no_predictor_reason.empty())
+      d.emplace_back("start", "previous cycle (no plate predictor: " +
+                                no_predictor_reason + ")");
     return d;
   }
 

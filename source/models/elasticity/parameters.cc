@@ -77,9 +77,9 @@ namespace NitscheContact
       declare_entry(prm,
         "Contact quadrature points", "0", Patterns::Integer(0, 12),
         "Points per direction of the 'Contact quadrature rule' on contact "
-        "faces; 0 selects degree + 3. Raise it to resolve the kinks of the "
-        "contact integrand where the status changes inside a face.");
-      declare_entry(prm, "Contact quadrature rule", "gauss",
+        "faces; 0 selects the face nodes (degree + 1) with 'lobatto' and "
+        "degree + 3 with 'gauss'.");
+      declare_entry(prm, "Contact quadrature rule", "lobatto",
                         Patterns::Selection("gauss|lobatto"),
                         contact_rule_help);
       declare_entry(prm, "Local refinement steps", "0",
@@ -94,13 +94,14 @@ namespace NitscheContact
         "previous cycle's solution is interpolated exactly onto the new "
         "mesh.");
       declare_entry(prm,
-        "Plate predictor", "false", Patterns::Bool(),
+        "Plate predictor", "auto", Patterns::Selection("auto|true|false"),
         "true: every cycle starts from the solution of a Mindlin plate "
         "(MITC4, frictionless, theta = 1) on the in-plane nodes of the "
         "cycle's mesh, lifted to 3D, instead of from the previous cycle's "
-        "solution. Use it for thin plates whose nested start needs many "
-        "Newton iterations; it needs the uniform mesh, 'Top face = free' "
-        "and 'Nonlinear solver/Load steps = 1'.");
+        "solution; it needs the uniform mesh, 'Top face = free' and "
+        "'Nonlinear solver/Load steps = 1'. 'auto' uses it where these "
+        "hold and says in the log why not otherwise; false starts from the "
+        "previous cycle.");
       declare_linear_solver_parameters(prm);
     }
     prm.leave_subsection();
@@ -146,7 +147,7 @@ namespace NitscheContact
     const std::string box = Utilities::trim(ph.get("Refinement box"));
     local_refinement_steps = ph.get_integer("Local refinement steps");
     refine_through_thickness = ph.get_bool("Refine through thickness");
-    with_plate_predictor      = ph.get_bool("Plate predictor");
+    plate_predictor_setting   = ph.get("Plate predictor");
     contact_quadrature_points = ph.get_integer("Contact quadrature points");
     contact_rule_name         = ph.get("Contact quadrature rule");
     ph.leave_subsection();
@@ -157,7 +158,8 @@ namespace NitscheContact
                 number_to_string(krylov_tolerance),
                 "must be in (0, 1)");
     if (contact_quadrature_points == 0)
-      contact_quadrature_points = degree + 3;
+      contact_quadrature_points =
+        contact_rule_name == "lobatto" ? degree + 1 : degree + 3;
     contact_face_quadrature =
       contact_rule(contact_rule_name, contact_quadrature_points,
                    "Elasticity/Contact quadrature points");

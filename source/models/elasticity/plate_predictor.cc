@@ -9,25 +9,54 @@ namespace NitscheContact
 {
   using namespace dealii;
 
+  std::string
+  ElasticityModel::plate_predictor_precondition() const
+  {
+    if (!refinement_box.empty() || local_refinement_steps > 0)
+      return "the plate lives on the uniform in-plane mesh; it needs "
+             "no 'Refinement box' and 'Local refinement steps = 0'";
+    if (top_clamped)
+      return "the Mindlin plate has no clamped top face; it needs "
+             "'Elasticity/Top face = free'";
+    if (prm.load_steps > 1)
+      return "the first cycle starts from the plate's solution under the "
+             "whole load, so 'Nonlinear solver/Load steps' = " +
+             std::to_string(prm.load_steps) +
+             " would not be used; it needs 'Load steps = 1'";
+    return "";
+  }
+
+
   void
   ElasticityModel::make_plate_predictor()
   {
-    const std::string entry = "Elasticity/Plate predictor";
-    if (!refinement_box.empty() || local_refinement_steps > 0)
-      bad_value(entry, "true",
-                "the plate lives on the uniform in-plane mesh; allowed "
-                "without a 'Refinement box' and with 'Local refinement "
-                "steps = 0'");
-    if (top_clamped)
-      bad_value(entry, "true",
-                "the Mindlin plate has no clamped top face; allowed with "
-                "'Elasticity/Top face = free'");
-    if (prm.load_steps > 1)
-      bad_value(entry, "true",
-                "the first cycle starts from the plate's solution under the "
-                "whole load, so 'Nonlinear solver/Load steps' = " +
-                  std::to_string(prm.load_steps) +
-                  " would not be used; allowed with 'Load steps = 1'");
+    if (plate_predictor_setting == "false")
+      return;
+    const std::string reason = plate_predictor_precondition();
+    if (!reason.empty() && plate_predictor_setting == "true")
+      bad_value("Elasticity/Plate predictor", "true", reason);
+    if (!reason.empty())
+      {
+        no_predictor_reason = reason;
+        return;
+      }
+    try
+      {
+        build_plate_predictor();
+      }
+    catch (const InputError &e)
+      {
+        // 'auto' asks for the plate only where it can be built
+        if (plate_predictor_setting == "true")
+          throw;
+        no_predictor_reason = e.what();
+      }
+  }
+
+
+  void
+  ElasticityModel::build_plate_predictor()
+  {
     // The plate's Q1 vertices are the in-plane positions of the support
     // points: degree x the in-plane cells of each cycle.
     const unsigned int mx =

@@ -63,10 +63,11 @@ namespace NitscheContact
         settings.symmetric_factorization,
         "raise 'Contact/Nitsche gamma0' (theta = 1 takes a fraction "
         "3 (1-nu^2) (lambda/E)^2 / gamma0 of the bending stiffness away; "
-        "with the default contact points and no membrane unknowns clamped "
+        "with 4x4 Gauss contact points and no membrane unknowns clamped "
         "MITC4 plates need gamma0 > 0.909 for nu = 0.3, other edges up to "
-        "1.4, more otherwise, e.g. MITC9 with the 3x3 Gauss-Lobatto points "
-        "1.6 on the clamped paper test and up to about 2.3; doc/mindlin.md) "
+        "1.4, more otherwise, e.g. with the vertex points about 2, MITC9 "
+        "with the 3x3 Gauss-Lobatto points 1.6 on the clamped paper test "
+        "and up to about 2.3; doc/mindlin.md) "
         "or use theta = -1"})
     , obstacle(common)
   {

@@ -47,15 +47,18 @@ namespace NitscheContact
         "for a gamma0 of order one on every mesh; with 'cell size' it needs "
         "a gamma0 that grows with the ratio of cell size to thickness "
         "(doc/mindlin.md).");
-      declare_entry(prm, "Contact quadrature points", "4",
-                    Patterns::Integer(2, 12),
+      declare_entry(prm, "Contact quadrature points", "0",
+                    Patterns::Integer(0, 12),
                     "Points per direction and cell for the contact "
-                    "integrals, whose integrand has kinks inside cells. Use "
-                    "4 or more with 'gauss'; with 'lobatto' 2 (MITC4) or 3 "
-                    "(MITC9) put them at the nodes.");
-      declare_entry(prm, "Contact quadrature rule", "gauss",
-                    Patterns::Selection("gauss|lobatto"),
-                    contact_rule_help);
+                    "integrals. 0 selects the nodes with 'lobatto' (2 for "
+                    "MITC4, 3 for MITC9) and 4 with 'gauss', whose "
+                    "integrand has kinks inside cells.");
+      declare_entry(prm, "Contact quadrature rule", "auto",
+                    Patterns::Selection("auto|gauss|lobatto"),
+                    std::string(contact_rule_help) +
+                      " 'auto' is 'lobatto' without friction and 'gauss' "
+                      "with friction, where the Newton iteration on the "
+                      "nodes can wander between slip states.");
       prm.enter_subsection("Linear solver");
       {
         declare_entry(prm,
@@ -150,6 +153,8 @@ namespace NitscheContact
     s.nitsche_length_is_thickness = prm.get("Nitsche length") == "thickness";
     s.contact_quadrature  = prm.get_integer("Contact quadrature points");
     s.contact_rule        = prm.get("Contact quadrature rule");
+    if (s.contact_rule == "auto")
+      s.contact_rule = common.friction > 0. ? "gauss" : "lobatto";
     prm.enter_subsection("Linear solver");
     s.multigrid               = prm.get("Type") == "multigrid";
     s.linear_solver           = s.multigrid ? "multigrid" :
@@ -165,6 +170,12 @@ namespace NitscheContact
       bad_value("Mindlin/Linear solver/Krylov tolerance",
                 number_to_string(s.krylov_tolerance),
                 "must be in (0, 1)");
+    if (s.contact_quadrature == 0)
+      s.contact_quadrature =
+        s.contact_rule == "lobatto" ? (s.shear == Shear::mitc9 ? 3 : 2) : 4;
+    if (s.contact_quadrature == 1)
+      bad_value("Mindlin/Contact quadrature points", "1",
+                "0 (the default for the rule) or 2 to 12");
     if (s.shear == Shear::mitc9 && s.contact_quadrature < 3)
       bad_value("Mindlin/Contact quadrature points",
                 std::to_string(s.contact_quadrature),

@@ -222,8 +222,10 @@ namespace NitscheContact
     void
     make_load_functions();
 
-    const CommonParameters &prm;
-    MPI_Comm                comm;
+    /// the common parameters, with 'Nitsche gamma0 = auto' resolved to
+    /// this model's value
+    CommonParameters prm;
+    MPI_Comm         comm;
 
     // "Elasticity" subsection
     unsigned int degree;
@@ -233,7 +235,10 @@ namespace NitscheContact
     std::vector<dealii::Point<3>> refinement_box;
     unsigned int local_refinement_steps;
     bool         refine_through_thickness;
-    bool         with_plate_predictor;
+    /// 'Plate predictor': auto, true or false
+    std::string  plate_predictor_setting;
+    /// with 'auto': why the plate predictor is not used (empty if it is)
+    std::string  no_predictor_reason;
     unsigned int contact_quadrature_points;
     std::string  contact_rule_name;
     /// contact_rule(contact_rule_name, contact_quadrature_points)
@@ -463,9 +468,17 @@ namespace NitscheContact
     // --- Plate predictor (plate_predictor.cc)
 
     /// 'Plate predictor': build the Mindlin plate on the in-plane nodes
-    /// (its parameters in plate_prm), and lift its solution to the start U
+    /// (its parameters in plate_prm) with 'true', and with 'auto' where
+    /// plate_predictor_precondition() holds and the plate accepts the
+    /// input (else no_predictor_reason says why not)
     void
     make_plate_predictor();
+    /// what keeps the plate predictor from this input (empty: nothing)
+    std::string
+    plate_predictor_precondition() const;
+    void
+    build_plate_predictor();
+    /// lift the plate's solution to the start U
     void
     lift_plate_solution();
     /// the plate predictor's parameters (it keeps a reference), the plate,
