@@ -1,7 +1,7 @@
 #!/bin/bash
 # Benchmark of the 3D elasticity model on the paper's test (parameters/
 # paper_3d.prm: clamped [0,10]^2 x (-0.005,0.005), Q2, body force -0.02/t,
-# plane obstacle x3 = -1, theta = 1, gamma0 = 20, frictionless), starting
+# plane obstacle x3 = -1, theta = 1, frictionless), starting
 # from a coarse 8x8x1 mesh (nested iteration). Each cycle doubles the
 # in-plane subdivisions and keeps one Q2 layer through the thickness
 # ('plane', as paper_3d.prm) or refines every cell in all three directions
@@ -9,28 +9,28 @@
 # wall-clock seconds per phase (from summary.json, 'Print timings = true'),
 # and the peak memory of the largest process (one MPI rank) when
 # /usr/bin/time is installed.
-# The sixth argument selects the 3x3 contact points per face: 'gauss'
-# (default, as paper_3d.prm) or 'lobatto' (the Q2 face nodes; fewer Newton
-# iterations, doc/benchmarks.md). The seventh sets gamma0 (default 20, as
-# paper_3d.prm; with the Lobatto points theta = 1 needs gamma0 above their
-# trace constant 33.6 on these flat cells, e.g. 60, doc/benchmarks.md). The
-# eighth sets the in-plane subdivisions of the first mesh (default 8; 11
-# with 4 cycles gives 88x88x1 cells, 281,961 DoFs). The table's column
-# 'neg' is the largest number of negative eigenvalues of a Newton matrix of
-# the cycle (from the L D L^T factorisation; '-' when it was LU or the
-# two-level solver), 'lin' the linear iterations of the cycle (GMRES; 1 per
-# reused factorisation with 'direct'). The ninth
-# selects how MUMPS factorises the (symmetric, theta = 1) Newton matrices:
-# 'ldlt' (default) or 'lu' (through Amesos). The
-# tenth selects how each cycle starts: 'nested' (default: the previous
-# cycle's solution, U = 0 on the first) or 'plate' ('Elasticity/Plate
-# predictor': the Mindlin plate's solution lifted to 3D; the column 'pred'
-# then gives its Newton iterations, whose seconds are part of 'setup').
+# The sixth argument selects the 3x3 contact points per face: 'lobatto'
+# (default, as the program: the Q2 face nodes) or 'gauss'. The seventh sets
+# gamma0 (default 60, the program's 'auto' for the 3D model; with the
+# Lobatto points theta = 1 needs gamma0 above their trace constant 33.6 on
+# these flat cells, doc/formulations.md). The eighth sets the in-plane
+# subdivisions of the first mesh (default 8; 11 with 4 cycles gives
+# 88x88x1 cells, 281,961 DoFs). The table's column 'neg' is the largest
+# number of negative eigenvalues of a Newton matrix of the cycle (from the
+# L D L^T factorisation; '-' when it was LU or the two-level solver), 'lin'
+# the linear iterations of the cycle (GMRES; 1 per reused factorisation
+# with 'direct'). The ninth selects how MUMPS factorises the (symmetric,
+# theta = 1) Newton matrices: 'ldlt' (default) or 'lu' (through Amesos).
+# The tenth selects how each cycle starts: 'auto' (default, as the
+# program: the plate where it applies), 'plate' ('Elasticity/Plate
+# predictor = true': the Mindlin plate's solution lifted to 3D; the column
+# 'pred' then gives its Newton iterations, whose seconds are part of
+# 'setup') or 'nested' (the previous cycle's solution, U = 0 on the first).
 # The third argument selects the linear solver: 'direct' (MUMPS), 'two-level'
 # (GMRES with the column smoother and the plate coarse space; Krylov
 # tolerance 1e-8, doc/benchmarks.md) or 'amg'.
 # Usage:
-#   benchmarks/elasticity.sh [path/to/nitsche-contact] [cycles] [direct|amg|two-level] [ranks] [plane|all] [gauss|lobatto] [gamma0] [subdivisions] [ldlt|lu] [nested|plate]
+#   benchmarks/elasticity.sh [path/to/nitsche-contact] [cycles] [direct|amg|two-level] [ranks] [plane|all] [lobatto|gauss] [gamma0] [subdivisions] [ldlt|lu] [auto|nested|plate]
 # The program must be built with CMAKE_BUILD_TYPE=Release. Nonlinear
 # tolerance 1e-6 (the round-off floor of this thin plate is ~1e-7).
 set -e
@@ -49,12 +49,12 @@ case "${5:-plane}" in
   all) through=true ;;
   *) echo "benchmarks/elasticity.sh: refinement must be 'plane' or 'all', not '$5'" >&2; exit 1 ;;
 esac
-rule=${6:-gauss}
+rule=${6:-lobatto}
 case "$rule" in
   gauss|lobatto) ;;
   *) echo "benchmarks/elasticity.sh: contact rule must be 'gauss' or 'lobatto', not '$rule'" >&2; exit 1 ;;
 esac
-gamma0=${7:-20}
+gamma0=${7:-60}
 case "$gamma0" in
   ''|*[!0-9.e+-]*) echo "benchmarks/elasticity.sh: gamma0 must be a positive number, not '$gamma0'" >&2; exit 1 ;;
 esac
@@ -64,10 +64,11 @@ case "$factorization" in
   lu) symmetric=false ;;
   *) echo "benchmarks/elasticity.sh: factorization must be 'ldlt' or 'lu', not '$factorization'" >&2; exit 1 ;;
 esac
-case "${10:-nested}" in
+case "${10:-auto}" in
+  auto) predictor=auto ;;
   nested) predictor=false ;;
   plate) predictor=true ;;
-  *) echo "benchmarks/elasticity.sh: start must be 'nested' or 'plate', not '${10}'" >&2; exit 1 ;;
+  *) echo "benchmarks/elasticity.sh: start must be 'auto', 'nested' or 'plate', not '${10}'" >&2; exit 1 ;;
 esac
 subdivisions=${8:-8}
 case "$subdivisions" in

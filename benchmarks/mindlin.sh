@@ -2,11 +2,11 @@
 # Benchmark of the Mindlin model on the paper's test (parameters/
 # paper_mindlin.prm): DoFs, nonlinear iterations and wall-clock seconds per
 # phase for each refinement cycle, in Release. Usage:
-#   benchmarks/mindlin.sh [path/to/nitsche-contact] [number of cycles] [gauss|lobatto]
+#   benchmarks/mindlin.sh [path/to/nitsche-contact] [number of cycles] [lobatto|gauss]
 #                         [direct|multigrid] [subdivisions] [mitc4|mitc9] [kappa]
-# The third argument selects the contact points: 'gauss' (default, 4x4 Gauss
-# as in paper_mindlin.prm) or 'lobatto' (2x2 Gauss-Lobatto = cell vertices;
-# fewer Newton iterations, doc/mindlin.md 4.1). The fourth the linear
+# The third argument selects the contact points: 'lobatto' (default, as the
+# program without friction: 2x2 Gauss-Lobatto = the cell vertices) or
+# 'gauss' (4x4 Gauss points; doc/mindlin.md 4.1). The fourth the linear
 # solver: 'direct' (default, MUMPS) or 'multigrid' (CG with the V-cycle over
 # Kirchhoff coarse levels, doc/mindlin.md 4.2). The fifth the subdivisions
 # of the first mesh per direction (default 8, as the .prm; 10 with 7 cycles
@@ -23,7 +23,7 @@ set -e
 here=$(cd "$(dirname "$0")/.." && pwd)
 exe=${1:-$here/build/nitsche-contact}
 cycles=${2:-7}
-rule=${3:-gauss}
+rule=${3:-lobatto}
 solver=${4:-direct}
 element=${6:-mitc4}
 kappa=${7:-0}

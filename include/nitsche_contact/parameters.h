@@ -71,8 +71,8 @@ namespace NitscheContact
     double theta    = 1.;
     /// 'Contact/Nitsche gamma0': the number given, none for 'auto'
     std::optional<double> gamma0_given;
-    /// gamma0 in use: the number given, for 'auto' 20 unless the model
-    /// calls use_model_gamma0()
+    /// gamma0 in use: the number given, or for 'auto' the value of the
+    /// model's use_model_gamma0() (20 for a model that calls none)
     double gamma0   = 20.;
     /// for 'Nitsche gamma0 = auto': gamma0 = value (a model's own choice)
     void

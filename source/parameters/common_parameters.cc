@@ -171,8 +171,9 @@ namespace NitscheContact
                     "(doc/theory.md). 'auto' is 60 in the 3D model (above "
                     "the trace constants 12.1 (Q1) and 33.7 (Q2) of its "
                     "Gauss-Lobatto contact points on the paper's flat "
-                    "cells) and 20 in the plate models; a number > 0 is "
-                    "used as given.");
+                    "cells) and 200 in the plate models (their theta-terms "
+                    "then change the bending stiffness by 0.45 %); a "
+                    "number > 0 is used as given.");
       declare_entry(prm, "Friction coefficient", "0", Patterns::Double(),
                     "The Coulomb friction coefficient F (0: frictionless).");
       declare_entry(prm, "Obstacle compliance", "auto", Patterns::Anything(),

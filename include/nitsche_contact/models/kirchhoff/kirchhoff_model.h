@@ -379,7 +379,9 @@ namespace NitscheContact
 
     // ----- common parameters, communicator
 
-    const CommonParameters &prm;
+    /// the common parameters, with 'Nitsche gamma0 = auto' resolved to
+    /// this model's value
+    CommonParameters prm;
     MPI_Comm                comm;
 
     // ----- the "Kirchhoff" subsection

@@ -383,7 +383,9 @@ namespace NitscheContact
     std::vector<std::pair<std::string, double>>
     solution_errors() const;
 
-    const CommonParameters &prm;
+    /// the common parameters, with 'Nitsche gamma0 = auto' resolved to
+    /// this model's value
+    CommonParameters prm;
     MPI_Comm                comm;
     const Settings          settings;
 
