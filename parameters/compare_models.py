@@ -19,6 +19,10 @@ writes into --out:
   fields.png                      each model's deflection field with the
                                   region where the plate lies on the
                                   obstacle (paper's Figures 1-3)
+  differences.png                 each model's centre-line deflection
+                                  minus the Kirchhoff GSV plate's
+  convergence.png                 the reaction of every cycle against
+                                  its DoFs
 --pinned solves the discretisation most tests pin (tests/verification/
 common.py): the rigid obstacle, Gauss contact points (3D: 3x3 with
 gamma0 = 20 and the nested start; MITC4: 4x4) instead of the defaults.
@@ -184,6 +188,49 @@ def plot(rows, out):
     fig.suptitle("Deflection; red: boundary of the region within 1e-3 of the obstacle")
     fig.tight_layout()
     fig.savefig(os.path.join(out, "fields.png"), dpi=110)
+    plot_differences(rows, out, plt)
+    plot_convergence(rows, out, plt)
+
+
+def plot_differences(rows, out, plt):
+    """differences.png: each model's centre-line deflection minus the
+    Kirchhoff GSV plate's, where the overlapping curves of profiles.png
+    differ."""
+    ref = [r for r in rows if r["key"] == "kirchhoff_gsv"]
+    if not ref:
+        return
+    w_ref = [float(d["deflection"]) for d in
+             csv.DictReader(open(os.path.join(ref[0]["outdir"], "profile.csv")))]
+    fig, ax = plt.subplots(figsize=(7, 4))
+    for r in rows:
+        if r is ref[0]:
+            continue
+        data = list(csv.DictReader(open(os.path.join(r["outdir"], "profile.csv"))))
+        ax.plot([float(d["x"]) for d in data],
+                [float(d["deflection"]) - w for d, w in zip(data, w_ref)], label=r["model"])
+    ax.axhline(0., color="k", lw=0.8)
+    ax.set_xlabel("x (y = 5)")
+    ax.set_ylabel("deflection minus Kirchhoff GSV")
+    ax.set_title("Paper test: difference to the Kirchhoff GSV plate")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "differences.png"), dpi=130)
+
+
+def plot_convergence(rows, out, plt):
+    """convergence.png: the reaction of every cycle against its DoFs, per
+    model."""
+    fig, ax = plt.subplots(figsize=(7, 4))
+    for r in rows:
+        cycles = json.load(open(os.path.join(r["outdir"], "summary.json")))["cycles"]
+        ax.semilogx([c["n_dofs"] for c in cycles], [c["contact_force"] for c in cycles],
+                    "o-", label=r["model"])
+    ax.set_xlabel("DoFs")
+    ax.set_ylabel("reaction of the obstacle")
+    ax.set_title("Paper test: reaction on each cycle")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "convergence.png"), dpi=130)
 
 
 if __name__ == "__main__":

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Convergence and parameter study on the paper's test (issue 5).
+"""Convergence and parameter study on the paper's test.
 
   /usr/bin/python3 parameters/convergence_study.py build/nitsche-contact results/convergence
                    [--parts abcd] [--quick]

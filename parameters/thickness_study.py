@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Thickness study (issue 5): 3D elasticity versus Mindlin-Reissner versus
+"""Thickness study: 3D elasticity versus Mindlin-Reissner versus
 Kirchhoff-Love on the paper's geometry as t/a goes from 1e-1 to 1e-3.
 
   python3 parameters/thickness_study.py [--exe build/nitsche-contact]

@@ -170,7 +170,7 @@ CASES = [
      ["Nonlinear solver/Tolerance", "'0'", "(0, 1)"]),
     ("tolerance = 2", "subsection Nonlinear solver\n  set Tolerance = 2\nend",
      ["Nonlinear solver/Tolerance", "'2'", "(0, 1)"]),
-    # the boundary (found by the mutation review of session 21)
+    # the boundary
     ("tolerance = 1", "subsection Nonlinear solver\n  set Tolerance = 1\nend",
      ["Nonlinear solver/Tolerance", "'1'", "(0, 1)"]),
     ("trailing comma in the load constants",
@@ -240,7 +240,6 @@ CASES = [
      "subsection Elasticity\n  set Refine through thickness = false\n"
      "  set Refinement box = 0, 0, -1; 1, 1, 1\n  set Local refinement steps = 1\nend",
      ["Elasticity/Refine through thickness", "'false'", "Local refinement steps", "= 1"]),
-    # found by the input review of session 15
     ("sphere centre not finite",
      "subsection Obstacle\n  set Type = sphere\n  set Sphere center = nan, 5, -3\nend",
      ["Obstacle/Sphere center", "nan, 5, -3", "finite decimal numbers"]),
@@ -335,7 +334,6 @@ CASES = [
     ("degenerate side ratio",
      "subsection Geometry\n  set Length x = 1e20\nend",
      ["Geometry/Length x", "1e+20", "Geometry/Length y", "[1e-6, 1e6]"]),
-    # (branches that the line coverage of session 19 found without a case)
     ("Length x = 0", "subsection Geometry\n  set Length x = 0\nend",
      ["Geometry/Length x", "'0'", "> 0"]),
     ("Length y < 0", "subsection Geometry\n  set Length y = -3\nend",
@@ -477,8 +475,8 @@ for allow in (False, True):
           "tolerance 1e-16: stopped after %d iterations (< 40 of the 100 allowed)" % len(iterations))
 
 # Probe points and a profile line within round-off (1e-10 of the plate
-# size) outside an edge are moved onto it: before session 15 they passed
-# the check and were then reported as NaN (null in summary.json).
+# size) outside an edge are moved onto it: otherwise they pass
+# the check and are then reported as NaN (null in summary.json).
 edge = os.path.join(args.workdir, "edge.prm")
 with open(edge, "w") as f:
     f.write("set Model = kirchhoff\nsubsection Geometry\n  set Subdivisions = 4, 4\nend\n"

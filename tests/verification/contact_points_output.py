@@ -140,9 +140,9 @@ for tag, prm, changes, ranks in cases:
             # (the cell's or bottom face's mean of the points' pressures) and
             # contact_fraction (the share of the weights in contact)
             # integrate to the contact force and the contact area (float32
-            # output: 1e-5). Before session 18 the 3D file evaluated the
-            # pressure at its output points, between the contact points,
-            # where it could exceed the largest point pressure 1e4-fold.
+            # output: 1e-5); a pressure evaluated at the output points, between
+            # the contact points, could exceed the largest point pressure
+            # 1e4-fold.
             directory = os.path.join(args.workdir, name)
             pieces = sorted(f for f in os.listdir(directory)
                             if re.match(r"(contact-|solution_|kirchhoff_)%02d\.\d+\.vtu$"

@@ -1,4 +1,4 @@
-"""Legal but unusual input that a review found mishandled (session 17), each
+"""Legal but unusual input, each
 checked against an independent source:
 
 1. A free plate lifted by a flat obstacle above it (Level 0.5) rests on it:
@@ -23,24 +23,23 @@ checked against an independent source:
    vertices are held at 0, the interior is not; min_deflection must equal
    the minimum of the field sampled on a 101 x 101 grid (field.csv, a
    second evaluation of the same field at other points) to 1e-3.
-7. A sphere smaller than the plate (session 18 review): where it does not
+7. A sphere smaller than the plate: where it does not
    reach, the VTU gap fields must be NaN (README), not the internal
    sentinel 1e30: the 3D contact file's initial_gap and penetration at the
    output points, the Kirchhoff cell field gap (a cell mean, NaN only where
    no point of the cell has the sphere below). Independent check: the
    points with NaN are exactly those outside the sphere's disc, and the
    finite values are bounded by the geometry (gap <= R + |z_c| + t).
-8. 'Nonlinear solver/Damping after' (untested until the coverage run of
-   session 19): on the Mindlin paper test with theta = 0 (no energy, so
+8. 'Nonlinear solver/Damping after': on the Mindlin paper test with theta = 0 (no energy, so
    the damped steps are Armijo backtracking on |R|), 'Damping after = 3'
    must say "no convergence after 3 full steps: switching to damped steps"
    and '= 0' damp from the first step (whose full step this test's run
    does not accept: the first log line shows a step < 1); both must reach
    the solution of the
    default run (the same discrete problem: probes and reaction to 1e-6).
-9. A free Mindlin plate lifted far (Level 1e7, session 20 review): |U| is
-   the rigid lift, so the stopping test relative to |U| passed with the
-   deformation still wrong (reaction 98 times the load, exit 0). The
+9. A free Mindlin plate lifted far (Level 1e7): |U| is the rigid lift, so
+   the stopping test relative to |U| passes with the deformation still
+   wrong (reaction 98 times the load). The
    equilibrium check of the accepted iterate must stop it with exit
    status 2 and its message; the same plate lifted by 0.5 (item 1) passes
    the check (relative_residual <= 1e-4 in summary.json). A clamped plate
@@ -239,7 +238,7 @@ for model, sub, piece, fields in [("elasticity", "8, 8, 1", "contact-00.0000.vtu
         nan = [v != v for v in vtu["initial_gap"][0]]
         check(outside == nan, "3D, small sphere: initial_gap NaN exactly outside the disc")
     # the contact-point file: gap and s_n nan exactly outside the disc (the
-    # internal sentinel 1e30 leaked there before session 20)
+    # internal sentinel 1e30 must not show)
     with open(os.path.join(args.workdir, "sphere_" + model, "contact_points-00.csv")) as f:
         rows = [{k: float(v) for k, v in row.items()} for row in csv.DictReader(f)]
     outside = [(p["x"] - centre[0]) ** 2 + (p["y"] - centre[1]) ** 2 >= radius ** 2

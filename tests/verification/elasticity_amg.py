@@ -1,4 +1,4 @@
-"""Issue 2, linear solver choice of the 3D model: 'Linear solver/Type = amg'
+"""The linear solver choice of the 3D model: 'Linear solver/Type = amg'
 (GMRES preconditioned by Trilinos ML) must give the same solution as the
 direct solver (MUMPS), the second method, where AMG works, and a clear
 error where it does not.

@@ -1,4 +1,4 @@
-"""Issue 2: the coarse paper 3D test (parameters/paper_3d.prm, 8 x 8 x 1 Q2
+"""The coarse paper 3D test (parameters/paper_3d.prm, 8 x 8 x 1 Q2
 cells refined in plane to 16 x 16 x 1: the nested start is carried between
 the meshes through a lattice summed over the ranks) gives the same summary
 on 1 and 2 MPI ranks, on both cycles.

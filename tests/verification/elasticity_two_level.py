@@ -1,4 +1,4 @@
-"""Issue 2: 'Elasticity/Linear solver/Type = two-level' (GMRES preconditioned by
+"""'Elasticity/Linear solver/Type = two-level' (GMRES preconditioned by
 column block Jacobi and a coarse space of plate kinematics, doc/design.md)
 against the direct solver, a second method of the program: the same Newton
 problems, so the same converged solutions (both stop at |dU|_a <= 1e-6

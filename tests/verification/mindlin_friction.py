@@ -119,13 +119,12 @@ close(cf["probes"][1], cp["probes"][1], 1e-2, "F=0.2: w(2) close to frictionless
 # The shipped parameter file of the paper's test with F = 0.2, nested from
 # 8^2 to 32^2 cells. With the plain generalized Newton step ('Stick step on
 # slip reversal = false') its full steps wander on the 16^2 cycle without
-# ever repeating a contact status (400 iterations, session 13), so the
+# ever repeating a contact status (no convergence in 400 iterations), so the
 # file sets 'Damping after no decrease = 20' (damped steps once |R| has had
 # no new minimum in 20 steps). With both rules off the run must fail or
 # need at least 3x the iterations of the shipped file on the 16^2 cycle:
-# the wandering path is steered by round-off, and with the packages of
-# session 17 it reached a solution after 363 iterations (71 with the
-# rules), where it had not in 400 before.
+# the wandering path is steered by round-off (on this machine it reaches
+# a solution after 363 iterations, against 71 with the rules).
 import os, re
 paper = open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
                           "parameters", "paper_mindlin_friction.prm")).read()

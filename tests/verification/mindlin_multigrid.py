@@ -19,8 +19,8 @@ through w = w_H, phi = -grad w_H) against the program's sparse direct solver
    edges (CG), and two simply supported and two free edges with soft
    support (GMRES). There the BFS function with equal w_xy at every vertex
    vanishes with its gradient at every MITC4 vertex, so the coarse space
-   must drop it: until session 12 the coarse matrices were singular and
-   the Krylov solver stalled (residual 0.1 after 2000 iterations).
+   must drop it: with it the coarse matrices are singular and the Krylov
+   solver stalls (residual 0.1 after 2000 iterations).
 Converged solutions must agree to 1e-6 (relative) in contact force and
 probe deflections, with active sets that differ by at most 0.5 % of the
 active points (the two solvers take different Newton paths: the multigrid

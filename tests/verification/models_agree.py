@@ -1,4 +1,4 @@
-"""Issue 5: the paper's test (clamped [0,10]^2, t = 0.01, E = 2e5, nu = 0.3,
+"""The paper's test (clamped [0,10]^2, t = 0.01, E = 2e5, nu = 0.3,
 q = -0.02, rigid plane x3 = -1, frictionless) solved on coarse, matching
 meshes by all three models agrees: the 3D model (Q2, 16x16x1 cells, the
 parameters of parameters/paper_3d.prm), the Reissner-Mindlin plate (MITC4,
@@ -54,7 +54,7 @@ face the nodes between them penetrate by 1e-4, doc/results.md; GSV 1e-3:
 the stabilised method lets the cubic dip inside the cells, 3.6e-4 below
 the obstacle on 16^2 at its contact points (max_penetration), 3.3e-5 on
 32^2, 4.9e-6 on 64^2, while its vertices stay on it; min_deflection
-samples the cell interiors since session 17).
+samples the cell interiors).
 The contact area is not compared: it is a different quantity in GSV and
 in the inserted-kinematics formulations (doc/results.md).
 The 3D runs refine in plane (8x8x1 -> 16x16x1, nested iteration, as

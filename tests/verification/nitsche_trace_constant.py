@@ -149,7 +149,7 @@ for tag, text, theta, gamma0, h_n in [
     check((text in out) == expect and ("theta-terms" in out) == expect,
           "%s: theta = %d, gamma0 = %g: %s" % (tag, theta, gamma0,
                                               "warned, '" + text + "'" if expect else "no warning"))
-# The GSV shift warning (session 20): the status psi - w + alpha h_K^4
+# The GSV shift warning: the status psi - w + alpha h_K^4
 # (D Delta^2 w - f) moves the obstacle condition by up to alpha h_K^4 |f|
 # where the discrete D Delta^2 w_h misses f; on one 10 x 10 cell of the
 # paper's plate that is 1e-4 / D * 1e4 * 0.02 = 1.092 (D = E t^3 / (12
@@ -168,8 +168,8 @@ for tag, sub in (("one_cell", "1, 1"), ("two_cells", "2, 2"), ("four_cells", "4,
     check((text in out) == expect and ("shifts the contact condition" in out) == expect,
           "GSV on %s cells: %s" % (sub, "warned, '" + text + "'" if expect else
                                    "no shift warning (shift %.3g)" % shift))
-# gamma0 below 0.1 (session 20): a warning that the penalty is far below
-# the stresses' scale (a review's gamma0 = 1e-6, theta = 0, gave a reaction
+# gamma0 below 0.1: a warning that the penalty is far below
+# the stresses' scale (gamma0 = 1e-6, theta = 0 gives a reaction
 # 75 times the load without contact); gamma0 = 0.1 (the theta = -1 patch
 # test's value, exact there) and the paper's friction file (gamma0 = 2) have
 # none, and the GSV formulation, which has no gamma0, none either.

@@ -1,4 +1,4 @@
-"""Issue 2: 'Elasticity/Plate predictor' starts each 3D cycle from the
+"""'Elasticity/Plate predictor' starts each 3D cycle from the
 Mindlin plate's solution instead of the nested (or zero) start.
 
 1. The start changes the path, not the solution: the paper's 3D test on

@@ -1,4 +1,4 @@
-"""Issue 4 section 3 / issue 5: on the paper's test (clamped [0,10]^2,
+"""On the paper's test (clamped [0,10]^2,
 t = 0.01, E = 2e5, nu = 0.3, q = -0.02, plane obstacle at x3 = -1) the
 Reissner-Mindlin plate with inserted-kinematics Nitsche contact and the
 Kirchhoff-Love plate with the GSV method agree on matching 64 x 64 meshes.
@@ -117,8 +117,7 @@ for name, c in (("Mindlin", m), ("Mindlin MITC9", m9), ("Kirchhoff", k)):
     close(c["probes"][0], -0.995, 1e-6, "%s centre on the obstacle level" % name)
     # the constraint holds at the contact quadrature points; the deflection
     # can dip below them near the free boundary (Mindlin: nodal values;
-    # Kirchhoff GSV: sampled inside the cells since session 17, 4.9e-6 on
-    # 64^2)
+    # Kirchhoff GSV: sampled inside the cells too, 4.9e-6 on 64^2)
     check(c["min_deflection"] >= -0.995 - 1e-5,
           "%s: penetration below 1e-5 of the gap (min w = %.8f)" % (name, c["min_deflection"]))
 finish()
