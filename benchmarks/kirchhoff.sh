@@ -11,7 +11,7 @@
 # is 'gsv' (default: GSV alpha*D = 1e-4 with 'Contact/Obstacle compliance =
 # auto'), 'rigid' (GSV with the compliance 0) or 'penalty' (alpha = 0,
 # kappa = 1e-6: the pure penalty / elastic obstacle of compliance 1e-6,
-# doc/kirchhoff.md 5). STOP is 'Nonlinear solver/Active-set stop' (default
+# doc/kirchhoff.md). STOP is 'Nonlinear solver/Active-set stop' (default
 # true).
 # 6 cycles = 512x512 cells = 1,052,676 dofs (with 'multigrid' about 1.1 GB
 # and 25 s; with 'direct' about 2.2 GB and a few minutes);

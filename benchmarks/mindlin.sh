@@ -6,9 +6,9 @@
 #                         [direct|multigrid] [subdivisions] [mitc4|mitc9] [kappa]
 # The third argument selects the contact points: 'lobatto' (default, as the
 # program without friction: 2x2 Gauss-Lobatto = the cell vertices) or
-# 'gauss' (4x4 Gauss points; doc/mindlin.md 4.1). The fourth the linear
+# 'gauss' (4x4 Gauss points; doc/mindlin.md). The fourth the linear
 # solver: 'direct' (default, MUMPS) or 'multigrid' (CG with the V-cycle over
-# Kirchhoff coarse levels, doc/mindlin.md 4.2). The fifth the subdivisions
+# Kirchhoff coarse levels, doc/mindlin.md). The fifth the subdivisions
 # of the first mesh per direction (default 8, as the .prm; 10 with 7 cycles
 # gives 640^2 cells = 1,232,643 dofs). The sixth the element: 'mitc4'
 # (default, paper_mindlin.prm) or 'mitc9' (parameters/paper_mindlin_mitc9.prm,
@@ -17,7 +17,7 @@
 # The seventh the obstacle's compliance 'Contact/Obstacle compliance'
 # (default 0: rigid; 'auto': the program's default, doc/formulations.md;
 # 1e-5: an elastic obstacle whose penalty length the 640^2 mesh resolves,
-# doc/mindlin.md 4.3).
+# doc/mindlin.md).
 # The program must be built with CMAKE_BUILD_TYPE=Release.
 set -e
 here=$(cd "$(dirname "$0")/.." && pwd)

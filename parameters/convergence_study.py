@@ -45,6 +45,8 @@ import subprocess
 import sys
 import time
 
+from compare_models import pinned_settings
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 PROBES = [(5.0, 5.0), (2.5, 5.0), (1.0, 5.0), (2.5, 2.5)]
@@ -58,10 +60,12 @@ tables_md = []
 # running the program
 
 def paper_prm(prm_file, **over):
-    """Text of parameters/<prm_file> with overrides appended (later entries
-    win in deal.II's ParameterHandler). over: dict subsection -> {entry: value};
-    the key '' is the top level."""
-    text = open(os.path.join(HERE, prm_file)).read()
+    """Text of parameters/<prm_file> in the discretisation the tests pin
+    (compare_models.pinned_settings: the rigid obstacle, Gauss contact
+    points), with overrides appended (later entries win in deal.II's
+    ParameterHandler). over: dict subsection -> {entry: value}; the key ''
+    is the top level."""
+    text = open(os.path.join(HERE, prm_file)).read() + pinned_settings(prm_file)
     return text + overrides(**over)
 
 

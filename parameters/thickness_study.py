@@ -39,6 +39,8 @@ import subprocess
 import sys
 import time
 
+from compare_models import pinned_settings
+
 A = 10.0
 THICKNESSES = [1.0, 0.3, 0.1, 0.03, 0.01]
 PROBES = [(5.0, 5.0), (2.5, 5.0), (1.0, 5.0)]
@@ -90,7 +92,9 @@ def overrides(model, t, outdir):
 def run(exe, here, out, model, prm, t, timeout):
     name = "%s_t%g" % (model, t)
     outdir = os.path.abspath(os.path.join(out, name))
-    text = open(os.path.join(here, prm)).read() + overrides(model, t, outdir)
+    # the discretisation the tests pin (rigid obstacle, Gauss contact points)
+    text = (open(os.path.join(here, prm)).read() + pinned_settings(prm)
+            + overrides(model, t, outdir))
     prm_out = os.path.join(out, name + ".prm")
     with open(prm_out, "w") as f:
         f.write(text)
