@@ -23,6 +23,8 @@ writes into --out:
                                   minus the Kirchhoff GSV plate's
   convergence.png                 the reaction of every cycle against
                                   its DoFs
+  pressure.png                    the mean contact pressure of the cells
+                                  along y = 5 (from contact_points-NN.csv)
 --pinned solves the discretisation most tests pin (tests/verification/
 common.py): the rigid obstacle, Gauss contact points (3D: 3x3 with
 gamma0 = 20 and the nested start; MITC4: 4x4) instead of the defaults.
@@ -86,7 +88,8 @@ def main():
         text += "\nsubsection Output\n  set Directory = %s\n" % outdir
         text += "  set Probe points = %s\n" % "; ".join("%g, %g" % p for p in PROBES)
         text += "  set Profile line = 0, 5; 10, 5\n  set Profile points = 201\n"
-        text += "  set Field grid points = 81\n  set Print timings = true\nend\n"
+        text += "  set Field grid points = 81\n  set Print timings = true\n"
+        text += "  set Contact points = true\nend\n"
         if args.quick:
             text += "subsection Geometry\n  set Number of cycles = 1\nend\n"
         elif args.more_cycles > 0:
@@ -195,6 +198,39 @@ def plot(rows, out):
     fig.savefig(os.path.join(out, "fields.png"), dpi=110)
     plot_differences(rows, out, plt)
     plot_convergence(rows, out, plt)
+    plot_pressure(rows, out, plt)
+
+
+def plot_pressure(rows, out, plt):
+    """pressure.png: the mean contact pressure of each cell of the row of
+    cells at y = 5, i.e. the sum of pressure x weight over the cell's
+    contact points divided by their weights (the cell's contact face), from
+    the last cycle's contact_points-NN.csv."""
+    fig, ax = plt.subplots(figsize=(7, 4))
+    for r in rows:
+        files = sorted(f for f in os.listdir(r["outdir"])
+                       if f.startswith("contact_points-") and f.count("-") == 1)
+        if not files:
+            continue
+        cells = {}
+        for d in csv.DictReader(open(os.path.join(r["outdir"], files[-1]))):
+            key = (float(d["cell_x"]), float(d["cell_y"]))
+            w = float(d["weight"])
+            c = cells.setdefault(key, [0., 0.])
+            c[0] += float(d["pressure"]) * w
+            c[1] += w
+        y_row = min({k[1] for k in cells}, key=lambda y: abs(y - 5.))
+        row = sorted((k[0], v[0] / v[1]) for k, v in cells.items()
+                     if abs(k[1] - y_row) < 1e-9 and v[1] > 0.)
+        ax.step([x for x, _ in row], [p for _, p in row], where="mid",
+                label=r["model"])
+    ax.axhline(0.02, color="k", lw=0.8, ls="--", label="the load |q| = 0.02")
+    ax.set_xlabel("x (the row of cells at y = 5)")
+    ax.set_ylabel("mean contact pressure of a cell")
+    ax.set_title("Paper test: contact pressure")
+    ax.legend(fontsize=7, loc="upper right")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "pressure.png"), dpi=130)
 
 
 def plot_differences(rows, out, plt):

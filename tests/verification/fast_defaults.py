@@ -17,8 +17,9 @@ last two meshes) must lie on the obstacle level in both runs to 1e-5. The
 3D default run must say in its log that it starts from the plate and must
 not warn about coercivity (gamma0 above the trace constant of its points).
 The defaults exist for speed: their Newton iterations over the run must
-not exceed the pinned run's (printed). With friction the Mindlin plate
-keeps the 4x4 Gauss points ('auto'), and the log says so."""
+not exceed the pinned run's (printed). With friction the MITC4 plate
+keeps the 4x4 Gauss points ('auto') and MITC9 takes its nodes; the log
+says so."""
 import os, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from common import parse_args, run, check, finish, shipped_prm
@@ -28,9 +29,12 @@ args = parse_args()
 CASES = [("elasticity", "paper_3d.prm", []),
          ("mindlin", "paper_mindlin.prm", [("Number of cycles", "4")])]
 
+# paper_3d.prm sets gamma0 = 60, the 3D 'auto' value; the pinned run takes 20
+PINNED_GAMMA0 = {"elasticity": "subsection Contact\n  set Nitsche gamma0 = 20\nend\n"}
+
 for name, prm, changes in CASES:
     text = shipped_prm(prm, changes)
-    pinned, _ = run(args, name + "_pinned", text)
+    pinned, _ = run(args, name + "_pinned", text + PINNED_GAMMA0.get(name, ""))
     fast, log = run(args, name + "_defaults", text, pinned="rigid")
     p, f = pinned["cycles"], fast["cycles"]
     check(all(c["converged"] for c in p + f), name + ": every cycle converged")
@@ -58,10 +62,18 @@ for name, prm, changes in CASES:
         check("is not above the coercivity bound" not in log,
               "3D: gamma0 'auto' lies above the bound of the nodes (no warning)")
 
-# with friction the Mindlin plate's 'auto' rule is the 4x4 Gauss rule
+# with friction the MITC4 plate's 'auto' rule is the 4x4 Gauss rule, the
+# MITC9 plate's its nodes (both converge: the run's exit status)
 _, log = run(args, "mindlin_friction", shipped_prm("paper_mindlin_friction.prm",
                                                    [("Number of cycles", "1")]),
              pinned="rigid")
 check("contact quadrature = 4x4 Gauss\n" in log,
-      "Mindlin with friction: 'auto' takes 4x4 Gauss points")
+      "MITC4 with friction: 'auto' takes 4x4 Gauss points")
+_, log = run(args, "mitc9_friction", shipped_prm("paper_mindlin_friction.prm",
+                                                 [("Number of cycles", "2"),
+                                                  ("Subdivisions", "4, 4"),
+                                                  ("Shear treatment", "MITC9")]),
+             pinned="rigid")
+check("contact quadrature = 3x3 Gauss-Lobatto\n" in log,
+      "MITC9 with friction: 'auto' takes the 3x3 nodes")
 finish()

@@ -131,11 +131,11 @@ namespace NitscheContact
     if (prm.theta == 1. && c_D >= (1. + nu) / 2.)
       o << ", and with c/D >= (1+nu)/2 = " << (1. + nu) / 2.
         << " its bending form need not be coercive (the bound for any "
-           "edges; clamped edges allow c/D < 1, doc/mindlin.md section 1)";
+           "edges; clamped edges allow c/D < 1, doc/mindlin.md)";
     o << ". For a change below 1 % use gamma0 >= "
       << std::max(factor, shear_factor_g) / 0.01
       << ", or theta = 0 (consistent, no energy for the line search; "
-         "doc/mindlin.md section 2).";
+         "doc/mindlin.md).";
     return o.str();
   }
 

@@ -60,8 +60,7 @@ namespace NitscheContact
     // Inexact Newton, as in the Kirchhoff model: a looser solve while
     // contact points change status, relative to the Newton tolerance on a
     // settled status, but never looser than 1e-6, beyond which the
-    // semismooth Newton path of the MITC4 plate derails (doc/mindlin.md
-    // 4.2).
+    // semismooth Newton path of the MITC4 plate derails.
     constexpr double loose     = 1e-6;
     const double     tolerance = HermiteMultigrid::newton_step_tolerance(
       last_changed == 0,

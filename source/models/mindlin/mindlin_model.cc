@@ -72,7 +72,7 @@ namespace NitscheContact
     , obstacle(common)
   {
     // 'Nitsche gamma0 = auto': with theta = +-1 the theta-terms then change
-    // the bending stiffness by 0.45 % (doc/mindlin.md section 2)
+    // the bending stiffness by 0.45 % (doc/mindlin.md)
     prm.use_model_gamma0(200.);
     friction = common.friction;
     if (Utilities::MPI::n_mpi_processes(comm) > 1)
@@ -305,7 +305,7 @@ namespace NitscheContact
                     << "3x3 Gauss-Lobatto points (the Q2 nodes: 'Contact quadrature "
                     << "rule = lobatto', 'Contact quadrature points = 3') took "
                     << "about a tenth of the Newton iterations on the paper's test "
-                    << "(doc/mindlin.md 6)" << std::endl;
+                    << "(doc/mindlin.md)" << std::endl;
         make_grid();
         setup_dofs();
         solution.reinit(dof_handler.n_dofs());

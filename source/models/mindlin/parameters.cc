@@ -25,7 +25,7 @@ namespace NitscheContact
         "shear, which locks for thin plates; for demonstration). MITC9 "
         "needs a direct solver and at least 3 contact points per direction, "
         "best the 3x3 Gauss-Lobatto points (the Q2 nodes), and with "
-        "theta = 1 a larger gamma0 than MITC4 (doc/mindlin.md 6).");
+        "theta = 1 a larger gamma0 than MITC4 (doc/mindlin.md).");
       declare_entry(prm,
         "Membrane unknowns", "auto", Patterns::Selection("auto|true|false"),
         "Whether the membrane displacements (u_x, u_y) are unknowns: "
@@ -56,9 +56,9 @@ namespace NitscheContact
       declare_entry(prm, "Contact quadrature rule", "auto",
                     Patterns::Selection("auto|gauss|lobatto"),
                     std::string(contact_rule_help) +
-                      " 'auto' is 'lobatto' without friction and 'gauss' "
-                      "with friction, where the Newton iteration on the "
-                      "nodes can wander between slip states.");
+                      " 'auto' is 'lobatto', except 'gauss' for MITC4 with "
+                      "friction, whose Newton iteration on the vertices can "
+                      "wander between slip states.");
       prm.enter_subsection("Linear solver");
       {
         declare_entry(prm,
@@ -66,7 +66,7 @@ namespace NitscheContact
           "'direct' solves with the sparse 'Direct solver'; 'multigrid' "
           "with conjugate gradients (GMRES when theta != 1) preconditioned "
           "by one V-cycle whose coarse levels are the Kirchhoff plate on "
-          "the mesh coarsened once (doc/mindlin.md 4.2). The multigrid "
+          "the mesh coarsened once (doc/mindlin.md). The multigrid "
           "serves frictionless Q1 plates (MITC4, full) without membrane "
           "unknowns on meshes with an even number of cells per direction. "
           "Its memory and time grow linearly with the DoFs: choose it for "
@@ -154,7 +154,8 @@ namespace NitscheContact
     s.contact_quadrature  = prm.get_integer("Contact quadrature points");
     s.contact_rule        = prm.get("Contact quadrature rule");
     if (s.contact_rule == "auto")
-      s.contact_rule = common.friction > 0. ? "gauss" : "lobatto";
+      s.contact_rule =
+        common.friction > 0. && s.shear != Shear::mitc9 ? "gauss" : "lobatto";
     prm.enter_subsection("Linear solver");
     s.multigrid               = prm.get("Type") == "multigrid";
     s.linear_solver           = s.multigrid ? "multigrid" :
