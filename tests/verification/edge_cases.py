@@ -45,7 +45,7 @@ checked against an independent source:
    the check (relative_residual <= 1e-4 in summary.json). A clamped plate
    with t = 0.001 and the paper's load scaled by t^3 (a right solution
    whose residual sits at the round-off of the contact terms r (u_n - g),
-   about 2e-3 of the load; the session's review) must pass with a
+   about 2e-3 of the load) must pass with a
    warning, and its reaction per load must be the t = 0.01 plate's within
    1 % (the Kirchhoff limit is the same plate; the gap differs by
    (0.01 - 0.001)/2 against 0.995).

@@ -52,7 +52,7 @@ elasticity_changes = [("Number of cycles", "2"), ("Subdivisions", "8, 8, 1"),
 kirchhoff_changes = [("Number of cycles", "2")]
 varying_load = kirchhoff_changes + [("Transverse load", "-0.02 * (1 + 0.5 * sin(x / 3))")]
 # hanging nodes (local refinement) in the 3D model; cycle 1 starts with a
-# line search (found by a review: the constrained rows once entered phi')
+# line search (the constrained rows must not enter phi')
 sphere_changes = [("Line search", "true\n  set Nonmonotone window = 0")]
 sphere = os.path.join(here, "..", "runs", "elasticity_sphere.prm")
 

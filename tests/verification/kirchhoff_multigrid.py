@@ -52,8 +52,8 @@ for name, edges, ref in cases:
 
 probes = "0.5, 0.5; 0.2, 0.5; 0.1, 0.1; 1.5, 0.5"
 # 32x32 cells of 1/16 x 1/32 (2:1: the cell prolongation and the coarse
-# cell sizes differ per direction; a review's mutation of the coarse size
-# passed on square cells): one coarse level on cycle 0, two on cycle 1, so
+# cell sizes differ per direction; a wrong coarse size passes on square
+# cells): one coarse level on cycle 0, two on cycle 1, so
 # the level updates pass through an intermediate level; one symmetry edge
 base = dict(lx=2.0, ly=1.0, sub=(32, 32), cycles=2, load=-1, level=-5e-4, probes=probes,
             edges="clamped, simply supported, symmetry, clamped")
