@@ -13,8 +13,8 @@
 # kappa = 1e-6: the pure penalty / elastic obstacle of compliance 1e-6,
 # doc/kirchhoff.md). STOP is 'Nonlinear solver/Active-set stop' (default
 # true).
-# 6 cycles = 512x512 cells = 1,052,676 dofs (with 'multigrid' about 1.1 GB
-# and 25 s; with 'direct' about 2.2 GB and a few minutes);
+# 6 cycles = 512x512 cells = 1,052,676 dofs (with 'multigrid' about 1.1 GB,
+# doc/benchmarks.md has the time; with 'direct' about 2.2 GB and minutes);
 # 7 cycles = 1024x1024 cells = 4,202,500 dofs (multigrid, about 3.9 GB;
 # its round-off floor is near 1e-9, so give TOLERANCE 1e-8 there).
 # Build in Release first.

@@ -169,7 +169,7 @@ namespace NitscheContact
                     "= gamma0 E / h. theta = 1 needs gamma0 above the trace "
                     "constant of the element and contact points "
                     "(doc/theory.md). 'auto' is 60 in the 3D model (above "
-                    "the trace constants 12.1 (Q1) and 33.7 (Q2) of its "
+                    "the trace constants 12.1 (Q1) and 33.65 (Q2) of its "
                     "Gauss-Lobatto contact points on the paper's flat "
                     "cells) and 200 in the plate models (their theta-terms "
                     "then change the bending stiffness by 0.45 %); a "

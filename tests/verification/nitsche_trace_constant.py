@@ -57,7 +57,7 @@ for tag, degree, side, thickness, ref in [("q1_cube", 1, 1, 1, 2.21), ("q1_flat"
     close(constant(s), ref, 0.005, tag + ": C_n against doc/theory.md 2.4")
     check(not warned(out), tag + ": gamma0 = 20 above C_n, no warning")
 
-# the paper's cell: regression values of doc/benchmarks.md (5.39: just below
+# the paper's cell: regression values (5.39: just below
 # the 5.46 of h_z/h_xy = 0.1, the thin limit; 33.6 with the Lobatto points,
 # which the inertia of the Newton matrices confirms: 237, 33, 0 negative
 # pivots at gamma0 = 20, 30, 60)
@@ -96,8 +96,8 @@ for alpha, theta, expect in [(2e-4, 1, True), (1.8e-4, 1, False), (2e-4, 0, Fals
           "Kirchhoff GSV, alpha*D = %g, theta = %d: %s"
           % (alpha, theta, "warned" if expect else "no warning"))
 
-# The theta-term bias of the inserted-kinematics plates (doc/mindlin.md
-# section 2): c/D = 3(1-nu^2)(lambda/E)^2 (h_n/t)/gamma0, computed here from
+# The theta-term bias of the inserted-kinematics plates (doc/mindlin.md,
+# Introduction): c/D = 3(1-nu^2)(lambda/E)^2 (h_n/t)/gamma0, computed here from
 # the material data; a warning naming the change in % when it exceeds 1 %.
 nu = 0.3
 lam_over_E = nu / ((1 + nu) * (1 - 2 * nu))

@@ -3,8 +3,7 @@ solver/Nonmonotone window', doc/design.md) against the monotone driver
 (window 0), the independent second method: the same discrete problem must
 come out whichever path the Newton iteration takes.
  - Mindlin plate, the paper's test from 10^2 cells over five cycles (to
-   160^2, four of them nested), vertex contact points, multigrid solver: the case of
-   doc/design.md, where the exact line search crawls on the
+   160^2, four of them nested), vertex contact points, multigrid solver: the case where the exact line search crawls on the
    80^2 and 160^2 cycles (43 and 52 iterations) and the window rule does not;
  - 3D elasticity, the paper's test (Q2, 8 x 8 x 1 then 16 x 16 x 1), Gauss-
    Lobatto contact points with gamma0 = 60 (above their trace constant,

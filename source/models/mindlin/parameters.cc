@@ -45,8 +45,7 @@ namespace NitscheContact
         "'thickness' or the 'cell size' (the largest cell side; for MITC9 "
         "the side of the Q2 cell). With 'thickness' theta = 1 is coercive "
         "for a gamma0 of order one on every mesh; with 'cell size' it needs "
-        "a gamma0 that grows with the ratio of cell size to thickness "
-        "(doc/mindlin.md).");
+        "a gamma0 that grows with the ratio of cell size to thickness.");
       declare_entry(prm, "Contact quadrature points", "0",
                     Patterns::Integer(0, 12),
                     "Points per direction and cell for the contact "

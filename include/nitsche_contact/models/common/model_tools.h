@@ -44,8 +44,8 @@ namespace NitscheContact
   /// times a curvature trace on the bottom face, so their theta-terms
   /// -(theta/r) sigma_n sigma_n(v) act on the whole plate and change the
   /// (tr k)^2 part of the bending form by -theta c, c/D = 3 (1 - nu^2)
-  /// (lambda/E)^2 (h_n/t) / gamma0 (r = gamma0 E / h_n; doc/mindlin.md
-  /// section 2). Returns a warning line when |theta| c/D exceeds 1 % (with
+  /// (lambda/E)^2 (h_n/t) / gamma0 (r = gamma0 E / h_n; doc/mindlin.md,
+  /// Introduction). Returns a warning line when |theta| c/D exceeds 1 % (with
   /// theta = 1 and c >= D (1 + nu)/2 it adds that coercivity is not
   /// guaranteed), otherwise an empty string. With friction the Mindlin
   /// plate also has the tangential theta-term -(theta/r) sigma_t
