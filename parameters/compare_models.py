@@ -25,6 +25,10 @@ writes into --out:
                                   its DoFs
   pressure.png                    the mean contact pressure of the cells
                                   along y = 5 (from contact_points-NN.csv)
+  status.png                      the contact status of every contact
+                                  point of the last cycle
+  surface.png                     the Mindlin plate's deflection as a
+                                  warped surface
 --pinned solves the discretisation most tests pin (tests/verification/
 common.py): the rigid obstacle, Gauss contact points (3D: 3x3 with
 gamma0 = 20 and the nested start; MITC4: 4x4) instead of the defaults.
@@ -199,6 +203,68 @@ def plot(rows, out):
     plot_differences(rows, out, plt)
     plot_convergence(rows, out, plt)
     plot_pressure(rows, out, plt)
+    plot_status(rows, out, plt)
+    plot_surface(rows, out, plt)
+
+
+def plot_surface(rows, out, plt):
+    """surface.png: the Mindlin plate's deflection from field.csv as a
+    surface warped by the deflection, the view that ParaView's 'Warp By
+    Scalar' gives (doc/outputs.md)."""
+    r = [r for r in rows if r["key"] == "mindlin"]
+    if not r:
+        return
+    data = list(csv.DictReader(open(os.path.join(r[0]["outdir"], "field.csv"))))
+    m = int(round(len(data) ** 0.5))
+    X = [[float(data[j * m + i]["x"]) for i in range(m)] for j in range(m)]
+    Y = [[float(data[j * m + i]["y"]) for i in range(m)] for j in range(m)]
+    W = [[float(data[j * m + i]["deflection"]) for i in range(m)] for j in range(m)]
+    fig = plt.figure(figsize=(6, 4.5))
+    ax = fig.add_subplot(projection="3d")
+    import numpy as np
+    surf = ax.plot_surface(np.array(X), np.array(Y), np.array(W), cmap="viridis",
+                           linewidth=0, antialiased=True)
+    ax.set_box_aspect((1, 1, 0.35))
+    ax.view_init(elev=25, azim=-60)
+    ax.set_xlabel("x")
+    ax.set_ylabel("y")
+    ax.set_zticks([0., -0.5, -1.])
+    ax.set_zlabel("w")
+    fig.colorbar(surf, shrink=0.6, label="deflection w")
+    ax.set_title(r[0]["model"] + ": deflection, warped", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "surface.png"), dpi=110)
+
+
+def last_contact_points(r):
+    """The rows of the last cycle's contact_points-NN.csv of a run."""
+    files = sorted(f for f in os.listdir(r["outdir"])
+                   if f.startswith("contact_points-") and f.count("-") == 1)
+    return list(csv.DictReader(open(os.path.join(r["outdir"], files[-1])))) if files else []
+
+
+def plot_status(rows, out, plt):
+    """status.png: the contact status of every contact point of the last
+    cycle (grey: no contact, blue: contact), one panel per model."""
+    n = len(rows)
+    fig, axes = plt.subplots(1, n, figsize=(4 * n, 4), squeeze=False)
+    for ax, r in zip(axes[0], rows):
+        points = last_contact_points(r)
+        # each point a square of its quadrature weight (the panels are
+        # about 260 points wide for the 10 units of the plate)
+        scale = (260. / 10.) ** 2
+        for active, colour in ((False, "0.85"), (True, "tab:blue")):
+            sel = [p for p in points if (int(p["status"]) > 0) == active]
+            ax.scatter([float(p["x"]) for p in sel], [float(p["y"]) for p in sel],
+                       s=[scale * float(p["weight"]) for p in sel], c=colour,
+                       marker="s", linewidths=0)
+        ax.set_title(r["model"], fontsize=9)
+        ax.set_aspect("equal")
+        ax.set_xlim(0, 10)
+        ax.set_ylim(0, 10)
+    fig.suptitle("Contact status of the contact points (blue: in contact)")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "status.png"), dpi=110)
 
 
 def plot_pressure(rows, out, plt):
@@ -208,12 +274,11 @@ def plot_pressure(rows, out, plt):
     the last cycle's contact_points-NN.csv."""
     fig, ax = plt.subplots(figsize=(7, 4))
     for r in rows:
-        files = sorted(f for f in os.listdir(r["outdir"])
-                       if f.startswith("contact_points-") and f.count("-") == 1)
-        if not files:
+        points = last_contact_points(r)
+        if not points:
             continue
         cells = {}
-        for d in csv.DictReader(open(os.path.join(r["outdir"], files[-1]))):
+        for d in points:
             key = (float(d["cell_x"]), float(d["cell_y"]))
             w = float(d["weight"])
             c = cells.setdefault(key, [0., 0.])

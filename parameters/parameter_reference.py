@@ -36,6 +36,11 @@ def entries(listing):
     return out
 
 
+# the sections that describe the problem; the others (the models' own
+# sections, the nonlinear solver, the output) how it is solved and written
+PROBLEM = ("", "Geometry", "Material", "Load", "Obstacle", "Contact", "Reference solution")
+
+
 def markdown(items):
     lines = ["# Parameter reference", "",
              "Every entry of a parameter file, with its default and what it does,",
@@ -43,17 +48,28 @@ def markdown(items):
              "written by `python3 parameters/parameter_reference.py build/nitsche-contact`).",
              "Every model's section is declared on every run, so one file may hold all of",
              "them; a model reads the common sections and its own.", ""]
+    groups = [("## The problem", [i for i in items if i[0].split("/")[0] in PROBLEM]),
+              ("## The method, the solvers and the output",
+               [i for i in items if i[0].split("/")[0] not in PROBLEM])]
+    for title, group in groups:
+        lines += [title, ""]
+        lines += section_lines(group)
+    return "\n".join(lines).rstrip() + "\n"
+
+
+def section_lines(items):
+    lines = []
     section = None
     for path, name, default, text in items:
         if path != section:
             section = path
-            lines += ["## %s" % (path or "Top level"), ""]
+            lines += ["### %s" % (path or "Top level"), ""]
         lines += ["- **`%s`** = `%s`" % (name, default) if default else
                   "- **`%s`** (empty by default)" % name]
         if text:
             lines += ["  " + text]
         lines += [""]
-    return "\n".join(lines).rstrip() + "\n"
+    return lines
 
 
 def main():

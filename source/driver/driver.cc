@@ -68,7 +68,8 @@ namespace NitscheContact
       {
         const std::vector<Stage> stages = stages_of_cycle(cycle);
         start_cycle(model, cycle, stages[0]);
-        pcout << "Cycle " << cycle << ": " << records.back().n_dofs
+        pcout << "Cycle " << cycle << ": " << cycle + 1 << " of "
+              << prm.n_cycles << ", " << records.back().n_dofs
               << " DoFs, h = " << records.back().h << std::endl;
         records.back().converged = solve_stages(model, cycle, stages);
         if (!records.back().converged)

@@ -1,50 +1,61 @@
-"""Every recipe of doc/cookbook.md runs as written (the program's defaults,
-its own output directory) and gives what the page says, each against an
-independent value:
- 1. sphere: the centre rests on the apex, w(5,5) = -0.5 + t/2 (geometry),
-    up to the penetration the obstacle compliance reports;
- 2. formula obstacle: the centre rests on the bump, w(5,5) = -0.6 + t/2;
- 3. patch load: run again without the obstacle (Level = -100), the probes
-    agree with Navier's double sine series for the simply supported plate
-    under the patch (200 x 200 terms) to 1e-4 relative;
- 4. cantilever strip: the tip deflection of the Timoshenko beam with the
-    plate's stiffness softened by the theta-terms' c/D (doc/mindlin.md),
-    to 1e-6 relative (MITC4 is exact at the nodes in cylindrical bending);
- 5. manufactured membrane: the last rates are 2 (L2) and 1 (H1) to 0.05."""
+"""Every recipe of doc/cookbook.md, parameters/cookbook/NAME.prm, runs as
+shipped (the program's defaults, its own output directory) and gives what
+the page says, each against an independent value:
+ - sphere: the centre rests on the apex, w(5,5) = -0.5 + t/2 (geometry),
+   up to the penetration the obstacle compliance reports;
+ - bump: the centre rests on the bump, w(5,5) = -0.6 + t/2;
+ - patch: without the obstacle (Level = -100) the probes agree with
+   Navier's double sine series for the simply supported plate under the
+   patch (200 x 200 terms) to 1e-4; with it the plate touches the plane;
+ - cantilever: the tip deflection of the Timoshenko beam with the plate's
+   stiffness softened by the theta-terms' c/D (doc/mindlin.md), to 1e-6
+   (MITC4 is exact at the nodes in cylindrical bending);
+ - thickness: the Mindlin, Kirchhoff and 3D models (three methods) agree
+   at a/t = 100, reaction to 1 %, w(2.5,5) to 0.5 %;
+ - friction: the Coulomb bound |Lambda_t| <= F |Lambda_n|, a tangential
+   resultant that vanishes by symmetry, and the reaction of the same
+   plate without friction to 1 %;
+ - elastic_foundation: the free plate's foundation carries the whole
+   applied load, 6.25, to 1e-8 (balance), and the corners lift off;
+ - manufactured: the last rates are 2 (L2) and 1 (H1) to 0.05."""
 import math, os, re, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from common import parse_args, run, check, close, finish
 
 args = parse_args()
 root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+folder = os.path.join(root, "parameters", "cookbook")
+recipes = {f[:-4]: open(os.path.join(folder, f)).read()
+           for f in sorted(os.listdir(folder)) if f.endswith(".prm")}
 page = open(os.path.join(root, "doc", "cookbook.md")).read()
-recipes = re.findall(r"```prm\n(.*?)```", page, re.S)
-check(len(recipes) == 5, "doc/cookbook.md has 5 recipes (found %d)" % len(recipes))
+for name in recipes:
+    check("parameters/cookbook/%s.prm" % name in page,
+          "doc/cookbook.md has a section for %s.prm" % name)
 E, nu, t = 2e5, 0.3, 0.01
 
 
-def last(summary):
-    c = summary["cycles"][-1]
-    check(all(x["converged"] for x in summary["cycles"]), "every cycle converged")
-    return c
+def solve(name, text=None):
+    s, _ = run(args, name, recipes[name] if text is None else text, pinned=False)
+    check(all(c["converged"] for c in s["cycles"]), name + ": every cycle converged")
+    return s["cycles"][-1]
 
 
-def rests_on(name, text, apex):
-    c = last(run(args, name, text, pinned=False)[0])
-    pen = c["compliance_penetration"]
-    w = c["probes"][0]
+def set_entry(text, entry, value):
+    new, n = re.subn(r"(?m)^(\s*set %s\s*=).*$" % re.escape(entry),
+                     lambda m: m.group(1) + " " + value, text)
+    check(n == 1, "one entry '%s' to change" % entry)
+    return new
+
+
+for name, apex in (("sphere", -0.5), ("bump", -0.6)):
+    c = solve(name)
+    pen, w = c["compliance_penetration"], c["probes"][0]
     check(abs(w - (apex + t / 2)) <= pen + 1e-6,
           "%s: w(5,5) = %.7f on the obstacle %.3f + t/2 (penetration %.1e)"
           % (name, w, apex, pen))
 
-
-rests_on("sphere", recipes[0], -0.5)
-rests_on("bump", recipes[1], -0.6)
-
-# 3. Navier's solution of the simply supported plate under the patch
-text = recipes[2].replace("set Level = -10\n", "set Level = -100\n")
-check(text != recipes[2], "patch: the obstacle moved away")
-c = last(run(args, "patch_free", text, pinned=False)[0])
+# patch: Navier's solution of the simply supported plate under the patch
+c = solve("patch_free", set_entry(recipes["patch"], "Level", "-100"))
 a = b = 10.
 x1, x2, y1, y2, q0 = 2.5, 5., 5., 7.5, -0.05
 D = E * t ** 3 / (12 * (1 - nu * nu))
@@ -65,12 +76,12 @@ def navier(x, y, n_terms=200):
 
 for i, p in enumerate([(5., 5.), (4., 5.5)]):
     close(c["probes"][i], navier(*p), 1e-4, "patch: w%s against Navier's series" % (p,))
-c = last(run(args, "patch", recipes[2], pinned=False)[0])
+c = solve("patch")
 check(c["contact_force"] > 0, "patch: the plate touches the plane (reaction %.4g)"
       % c["contact_force"])
 
-# 4. cylindrical bending of the thick cantilever strip
-c = last(run(args, "cantilever", recipes[3], pinned=False)[0])
+# cantilever: cylindrical bending of the thick strip
+c = solve("cantilever")
 L, tc, q, gamma0, kappa_s = 10., 0.5, -0.01, 200., 5. / 6.
 Dc = E * tc ** 3 / (12 * (1 - nu * nu))
 lam_E = nu / ((1 + nu) * (1 - 2 * nu))
@@ -79,8 +90,34 @@ G = E / (2 * (1 + nu))
 w_tip = q * L ** 4 / (8 * Dc * (1 - c_D)) + q * L ** 2 / (2 * kappa_s * G * tc)
 close(c["probes"][0], w_tip, 1e-6, "cantilever: tip deflection against the Timoshenko beam")
 
-# 5. convergence rates of the manufactured membrane
-c = last(run(args, "manufactured", recipes[4], pinned=False)[0])
+# thickness: three models on the same plate
+res = {m: solve("thickness_" + m, set_entry(recipes["thickness"], "Model", m))
+       for m in ("mindlin", "kirchhoff", "elasticity")}
+for m in ("kirchhoff", "elasticity"):
+    close(res[m]["contact_force"], res["mindlin"]["contact_force"], 1e-2,
+          "thickness: reaction, %s against Mindlin" % m)
+    close(res[m]["probes"][1], res["mindlin"]["probes"][1], 5e-3,
+          "thickness: w(2.5,5), %s against Mindlin" % m)
+
+# friction: the Coulomb bound, symmetry, and the frictionless plate
+c = solve("friction")
+ex = dict(c["extra"])
+check(ex["max_friction_ratio"] <= 1 + 1e-9,
+      "friction: |Lambda_t| / (F |Lambda_n|) <= 1 (%.12g)" % ex["max_friction_ratio"])
+for k in ("tangential_resultant_x", "tangential_resultant_y"):
+    check(abs(ex[k]) <= 1e-6 * ex["tangential_force"],
+          "friction: %s = %.2e vanishes by symmetry" % (k, ex[k]))
+f0 = solve("friction_off", set_entry(recipes["friction"], "Friction coefficient", "0"))
+close(c["contact_force"], f0["contact_force"], 1e-2, "friction: reaction against the frictionless plate")
+
+# elastic foundation: the free plate's reaction is the applied load
+c = solve("elastic_foundation")
+close(c["contact_force"], 2.5 * 2.5 * 1.0, 1e-8, "elastic_foundation: reaction = applied load")
+check(c["max_deflection"] > 0, "elastic_foundation: the corners lift off (max w %.3g)"
+      % c["max_deflection"])
+
+# manufactured: convergence rates of the membrane
+c = solve("manufactured")
 check(abs(c["rates"]["L2"] - 2) <= 0.05 and abs(c["rates"]["H1"] - 1) <= 0.05,
       "manufactured: rates L2 %.3f, H1 %.3f" % (c["rates"]["L2"], c["rates"]["H1"]))
 finish()
