@@ -214,6 +214,7 @@ def part_d(results):
             header += [q, "err", "EOC"]
         rows = []
         prev = None
+        curve_dofs, curve_errors = [], []
         for c in cyc[:-1]:
             n = int(round(10.0 / c["h"])) if c["h"] > 0 else 0
             row = ["%d²" % n, str(c["n_dofs"]), str(c["nonlinear_iterations"])]
@@ -226,6 +227,8 @@ def part_d(results):
                         fmt(eoc, "%.2f")]
             prev = errs
             rows.append(row)
+            curve_dofs.append(c["n_dofs"])
+            curve_errors.append(errs)
         n = int(round(10.0 / ref["h"]))
         rows.append(["%d² (ref)" % n, str(ref["n_dofs"]), str(ref["nonlinear_iterations"])]
                     + sum([[fmt(f(ref), "%.6f" if q != "area" else "%.4f"), "", ""]
@@ -233,6 +236,39 @@ def part_d(results):
         write_table("eoc_" + key,
                     "EOC vs the finest cycle, %s (nested iteration, %.0f s in all)"
                     % (EOC_RUNS[key][1], r["seconds"]), header, rows)
+        plot_eoc("eoc_" + key, EOC_RUNS[key][1], curve_dofs,
+                 [q for q, _ in quantities], curve_errors)
+
+
+def plot_eoc(name, label, dofs, quantities, errors):
+    """<name>.png: the relative errors against the finest cycle over the
+    DoFs, log-log, one curve per quantity, with the slopes of h and h^2."""
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("matplotlib not available: no %s.png" % name)
+        return
+    fig, ax = plt.subplots(figsize=(6, 4))
+    for i, q in enumerate(quantities):
+        pts = [(n, e[i]) for n, e in zip(dofs, errors) if e[i] > 0]
+        if pts:
+            ax.loglog([n for n, _ in pts], [e for _, e in pts], "o-", label=q)
+    if len(dofs) > 1:
+        top = max(max(e) for e in errors)
+        for order, style in ((1, ":"), (2, "--")):
+            # the error of h^order against the DoFs ~ h^-2
+            ax.loglog([dofs[0], dofs[-1]],
+                      [top, top * (dofs[0] / dofs[-1]) ** (order / 2.)],
+                      "k" + style, lw=0.8, label="h^%d" % order)
+    ax.set_xlabel("DoFs")
+    ax.set_ylabel("relative error against the finest cycle")
+    ax.set_title(label, fontsize=9)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(args.out, name + ".png"), dpi=120)
+    plt.close(fig)
 
 
 # --------------------------------------------------------------------------
