@@ -8,6 +8,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <nitsche_contact/geometry/plate_geometry.h>
 #include <nitsche_contact/nitsche_kernel.h>
 #include <nitsche_contact/parameters/input_checks.h>
 #include <nitsche_contact/parameters/obstacle_surface.h>
@@ -25,26 +26,31 @@
 
 namespace NitscheContact
 {
-  /// Boundary condition on one lateral edge of the plate (one lateral face of
-  /// the 3D block).
-  enum class EdgeCondition
-  {
-    clamped,          ///< all displacements (and rotations) zero
-    simply_supported, ///< deflection zero (hard support for plates)
-    symmetry,         ///< normal displacement and normal rotation zero
-    free              ///< natural
-  };
-
   struct CommonParameters
   {
     // "Model" (top level)
     std::string model;
 
-    // "Geometry": the plate [0,Lx] x [0,Ly] x (-t/2, t/2)
+    // "Geometry": the mid-plane (the rectangle [0,Lx] x [0,Ly] or another
+    // shape) times (-t/2, t/2)
     double                       length_x  = 10.;
     double                       length_y  = 10.;
     double                       thickness = 0.01;
-    std::array<EdgeCondition, 4> edges;   // x=0, x=Lx, y=0, y=Ly
+    /// the shape, its coarse mesh and the boundary conditions by id
+    PlateGeometry                geometry;
+    /// The coarse mesh of the plate (PlateGeometry::make_coarse_mesh()).
+    void
+    make_coarse_mesh(dealii::Triangulation<2> &triangulation) const
+    {
+      geometry.make_coarse_mesh(triangulation, subdivisions);
+    }
+    /// the condition on boundary id `id` ('Geometry/Boundary conditions';
+    /// on the rectangle 0, 1, 2, 3 are x = 0, x = Lx, y = 0, y = Ly)
+    EdgeCondition
+    boundary_condition(const unsigned int id) const
+    {
+      return geometry.conditions(static_cast<dealii::types::boundary_id>(id));
+    }
     std::vector<unsigned int>    subdivisions; // cells per direction (x,y[,z])
     unsigned int                 initial_refinement = 0;
     unsigned int                 n_cycles           = 1;
@@ -170,7 +176,7 @@ namespace NitscheContact
     double
     regularisation_length() const
     {
-      return 1e-3 * std::max(length_x, length_y);
+      return 1e-3 * geometry.size();
     }
     /// 'Contact/Obstacle compliance' for the log: the number, or "auto,
     /// <length_compliance> with l = ...".
@@ -194,10 +200,10 @@ namespace NitscheContact
 
     /// InputError when the rigid obstacle lies above `surface`, the height
     /// of the undeformed body's contact surface, on a clamped or simply
-    /// supported edge: the contact problem has no solution there (models
-    /// with a rigid obstacle call it).
+    /// supported part of the boundary: the contact problem has no solution
+    /// there (models with a rigid obstacle call it).
     void
-    check_obstacle_below_supported_edges(double surface) const;
+    check_obstacle_below_supports(double surface) const;
 
     /// Convenience: the Lame constants of the material.
     double
@@ -220,10 +226,6 @@ namespace NitscheContact
     }
 
   };
-  /// Name of an edge condition, for logs.
-  std::string
-  to_string(EdgeCondition c);
-
 } // namespace NitscheContact
 
 #endif

@@ -117,19 +117,23 @@ namespace NitscheContact
     // the 2D field (collective: before the rank check below)
     if (cycle + 1 == prm.n_cycles && prm.field_points > 0)
       {
-        const unsigned int n = prm.field_points;
+        // a grid over the plate's bounding box; its points off the plate
+        // are left out
+        const unsigned int    n = prm.field_points;
+        const Point<2>       &a = prm.geometry.lower, &b = prm.geometry.upper;
         std::vector<Point<2>> grid;
         for (unsigned int j = 0; j < n; ++j)
           for (unsigned int i = 0; i < n; ++i)
-            grid.emplace_back(prm.length_x * i / (n - 1),
-                              prm.length_y * j / (n - 1));
+            grid.emplace_back(a[0] + (b[0] - a[0]) * i / (n - 1),
+                              a[1] + (b[1] - a[1]) * j / (n - 1));
         const std::vector<double> wg = model.deflection_at(grid);
         if (Utilities::MPI::this_mpi_process(comm) != 0)
           return;
         std::ofstream g(prm.output_directory + "/field.csv");
         g << "x,y,deflection\n" << std::setprecision(10);
         for (unsigned int k = 0; k < grid.size(); ++k)
-          g << grid[k][0] << ',' << grid[k][1] << ',' << wg[k] << '\n';
+          if (std::isfinite(wg[k]))
+            g << grid[k][0] << ',' << grid[k][1] << ',' << wg[k] << '\n';
       }
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
@@ -137,10 +141,21 @@ namespace NitscheContact
     std::ofstream f(prm.output_directory + "/profile-" +
                     Utilities::int_to_string(cycle, 2) + ".csv");
     f << "s,x,y,deflection\n" << std::setprecision(10);
+    // points of the line off the plate (a hole, a re-entrant corner, the
+    // corners of a disk's bounding box) are left out
+    unsigned int off_plate = 0;
     for (unsigned int i = 0; i < points.size(); ++i)
-      f << length * i / (points.size() - 1) << ',' << points[i][0] << ','
-        << points[i][1] << ',' << w[i] << '\n';
+      if (std::isfinite(w[i]))
+        f << length * i / (points.size() - 1) << ',' << points[i][0] << ','
+          << points[i][1] << ',' << w[i] << '\n';
+      else
+        ++off_plate;
     f.close();
+    if (off_plate > 0 && cycle == 0)
+      pcout << "  profile: " << off_plate << " of " << points.size()
+            << " points of 'Output/Profile line' lie off the plate and are "
+               "left out of profile.csv"
+            << std::endl;
     if (cycle + 1 == prm.n_cycles)
       std::filesystem::copy_file(
         prm.output_directory + "/profile-" + Utilities::int_to_string(cycle, 2) +

@@ -45,24 +45,6 @@ namespace NitscheContact
       return v;
     }
 
-    EdgeCondition
-    parse_edge(const std::string &s, const std::string &entry)
-    {
-      const std::string t = Utilities::trim(s);
-      if (t == "clamped")
-        return EdgeCondition::clamped;
-      if (t == "simply supported")
-        return EdgeCondition::simply_supported;
-      if (t == "symmetry")
-        return EdgeCondition::symmetry;
-      if (t == "free")
-        return EdgeCondition::free;
-      bad_value(entry,
-                t,
-                "allowed are 'clamped', 'simply supported', 'symmetry', "
-                "'free'");
-    }
-
     std::string
     prm_text_of_center(const Point<3> &c)
     {
@@ -79,24 +61,18 @@ namespace NitscheContact
     {
       prm.enter_subsection("Geometry");
       declare_entry(prm, "Length x", "10", Patterns::Double(),
-                    "Side of the plate along x; the mid-plane is [0, Lx] x "
-                    "[0, Ly].");
+                    "Side of the plate along x: the rectangle is [0, Lx] x "
+                    "[0, Ly] (also the outline of the L-shape and of the "
+                    "rectangle with hole).");
       declare_entry(prm, "Length y", "10", Patterns::Double(),
                     "Side of the plate along y.");
       declare_entry(prm, "Thickness", "0.01", Patterns::Double(),
                     "Plate thickness t; the 3D body is [0, Lx] x [0, Ly] x "
                     "(-t/2, t/2).");
-      declare_entry(prm,
-                    "Edge conditions",
-                    "clamped, clamped, clamped, clamped",
-                    Patterns::Anything(),
-                    "Conditions on the edges x = 0, x = Lx, y = 0, y = Ly, "
-                    "each one of 'clamped', 'simply supported' (deflection "
-                    "zero), 'symmetry' (normal displacement and normal "
-                    "rotation zero) or 'free'.");
       declare_entry(prm, "Subdivisions", "8, 8, 1", Patterns::Anything(),
                     "Cells of the coarse mesh along x, y and, for the 3D "
                     "model, through the thickness.");
+      PlateGeometry::declare(prm);
       declare_entry(prm, "Initial refinement", "0", Patterns::Integer(0, 12),
                     "Global refinements of the coarse mesh before the first "
                     "cycle.");
@@ -275,11 +251,16 @@ namespace NitscheContact
                     "Print the wall-clock time of every phase at the end.");
       declare_entry(prm, "Probe points", "centre", Patterns::Anything(),
                     "Points 'x, y; x, y; ...' where the deflection is "
-                    "reported; 'centre' is (Lx/2, Ly/2), empty for none.");
+                    "reported; 'centre' is the centre of the plate's "
+                    "bounding box ((Lx/2, Ly/2) for the rectangle), left "
+                    "out where it lies off the plate (in a hole); empty "
+                    "for none.");
       declare_entry(prm, "Profile line", "centre line", Patterns::Anything(),
                     "End points 'x0, y0; x1, y1' of the line along which "
                     "profile.csv samples the deflection; 'centre line' is "
-                    "y = Ly/2.");
+                    "the line through the middle of the plate's bounding "
+                    "box parallel to x (y = Ly/2 for the rectangle). Its "
+                    "points off the plate are left out.");
       declare_entry(prm, "Profile points", "101",
                     Patterns::Integer(2, 100000),
                     "Number of points along the profile line.");
@@ -322,6 +303,11 @@ namespace NitscheContact
                           "use '" + entry +
                             "' in the subsection 'Linear solver' of the "
                             "model's subsection");
+    declare_moved_entry("Geometry/Edge conditions",
+                        "use 'Geometry/Boundary conditions' with the "
+                        "rectangle's boundary ids 0, 1, 2, 3 (x = 0, x = Lx, "
+                        "y = 0, y = Ly), e.g. 'Boundary conditions = 0: "
+                        "clamped; 1: free; all: simply supported'");
     std::string models;
     for (const ModelRegistry::Entry &m : ModelRegistry::entries())
       models += (models.empty() ? "" : "; ") + m.name + ": " + m.description;
@@ -376,61 +362,55 @@ namespace NitscheContact
   }
 
   void
-  CommonParameters::check_obstacle_below_supported_edges(
-    const double surface) const
+  CommonParameters::check_obstacle_below_supports(const double surface) const
   {
-    // An obstacle above an edge whose deflection is held at 0 (clamped or
-    // simply supported) leaves the rigid-obstacle problem without a
-    // solution; the Nitsche terms would then return a meaningless
-    // equilibrium with a huge reaction.
-    {
-      const ObstacleSurface obstacle(*this);
-      const char *const     names[4] = {"x = 0", "x = Lx", "y = 0", "y = Ly"};
-      const unsigned int    n        = 100;
-      for (unsigned int e = 0; e < 4; ++e)
-        if (edges[e] == EdgeCondition::clamped ||
-            edges[e] == EdgeCondition::simply_supported)
-          // n + 1 samples, and (i = n + 1) the point of the edge nearest to
-          // a sphere's centre, where the sphere is highest
-          for (unsigned int i = 0; i <= n + 1; ++i)
-            {
-              double s = static_cast<double>(i) / n;
-              if (i == n + 1)
-                {
-                  if (obstacle_type != "sphere")
-                    break;
-                  s = std::clamp(e < 2 ? sphere_center[1] / length_y :
-                                         sphere_center[0] / length_x,
-                                 0.,
-                                 1.);
-                }
-              const Point<2> p  = e < 2 ? Point<2>(e == 0 ? 0. : length_x,
-                                                  s * length_y) :
-                                          Point<2>(s * length_x,
-                                                  e == 2 ? 0. : length_y);
-              const double   h  = obstacle.height(p);
-              if (h > surface + 1e-12 * thickness)
-                bad_value(obstacle_type == "plane" ? "Obstacle/Level" :
-                          obstacle_type == "sphere" ? "Obstacle/Sphere center" :
-                                                      "Obstacle/Height",
-                          obstacle_type == "plane" ?
-                            number_to_string(obstacle_level) :
-                          obstacle_type == "sphere" ?
-                            prm_text_of_center(sphere_center) :
-                            obstacle_expression,
-                          "the obstacle (height " + number_to_string(h) +
-                            " at (" + number_to_string(p[0]) + ", " +
-                            number_to_string(p[1]) +
-                            ")) lies above the contact surface " +
-                            number_to_string(surface) +
-                            " of the undeformed body on the supported edge " +
-                            names[e] +
-                            " (Geometry/Edge conditions): the contact "
-                            "problem has no solution; lower the obstacle or "
-                            "free that edge");
-            }
-    }
-  
+    // An obstacle above a boundary part whose deflection is held at 0
+    // (clamped or simply supported) leaves the rigid-obstacle problem
+    // without a solution; the Nitsche terms would then return a
+    // meaningless equilibrium with a huge reaction. The samples come in
+    // runs of 101 points along each coarse boundary edge; between two
+    // samples a sphere is highest at the point nearest to its centre.
+    const ObstacleSurface       obstacle(*this);
+    const std::vector<Point<2>> samples = geometry.supported_boundary_samples();
+    const Point<2> sphere_xy(sphere_center[0], sphere_center[1]);
+    for (std::size_t k = 0; k < samples.size(); ++k)
+      {
+        std::vector<Point<2>> points = {samples[k]};
+        if (obstacle_type == "sphere" && k % 101 != 100)
+          {
+            const Tensor<1, 2> d = samples[k + 1] - samples[k];
+            const double       s =
+              d.norm_square() > 0. ?
+                std::clamp((sphere_xy - samples[k]) * d / d.norm_square(),
+                           0.,
+                           1.) :
+                0.;
+            points.push_back(samples[k] + s * d);
+          }
+        for (const Point<2> &p : points)
+          {
+            const double h = obstacle.height(p);
+            if (h > surface + 1e-12 * thickness)
+              bad_value(obstacle_type == "plane"  ? "Obstacle/Level" :
+                        obstacle_type == "sphere" ? "Obstacle/Sphere center" :
+                                                    "Obstacle/Height",
+                        obstacle_type == "plane" ?
+                          number_to_string(obstacle_level) :
+                        obstacle_type == "sphere" ?
+                          prm_text_of_center(sphere_center) :
+                          obstacle_expression,
+                        "the obstacle (height " + number_to_string(h) +
+                          " at (" + number_to_string(p[0]) + ", " +
+                          number_to_string(p[1]) +
+                          ")) lies above the contact surface " +
+                          number_to_string(surface) +
+                          " of the undeformed body on a clamped or simply "
+                          "supported boundary (Geometry/Boundary "
+                          "conditions): the contact problem has no "
+                          "solution; lower the obstacle or free that part "
+                          "of the boundary");
+          }
+      }
   }
 
   void
@@ -455,13 +435,6 @@ namespace NitscheContact
                        " and 'Geometry/Length y' = " +
                        number_to_string(length_y) +
                        ": the side ratio Lx/Ly must lie in [1e-6, 1e6]");
-    const auto e =
-      Utilities::split_string_list(prm.get("Edge conditions"), ',');
-    if (e.size() != 4)
-      bad_value("Geometry/Edge conditions", prm.get("Edge conditions"),
-                "expected four conditions (x=0, x=Lx, y=0, y=Ly)");
-    for (unsigned int i = 0; i < 4; ++i)
-      edges[i] = parse_edge(e[i], "Geometry/Edge conditions");
     subdivisions.clear();
     for (const double d : parse_doubles(prm.get("Subdivisions"),
                                         "Geometry/Subdivisions", ','))
@@ -476,6 +449,7 @@ namespace NitscheContact
                 "expected 'nx, ny' or 'nx, ny, nz'");
     if (subdivisions.size() == 2)
       subdivisions.push_back(1);
+    geometry.parse(prm, length_x, length_y, subdivisions);
     initial_refinement = prm.get_integer("Initial refinement");
     // (the first mesh must fit in memory; later cycles refine it; a
     // global refinement splits a cell into 4 (plates) or 8 (3D))
@@ -511,14 +485,18 @@ namespace NitscheContact
     const auto f = make_parsed_function<2>(load_expression, load_constants,
                                            1, "Load/Transverse load");
     check_finite_on_plate(*f, "Load/Transverse load", load_expression,
-                          length_x, length_y, thickness);
+                          geometry, thickness);
     // its size on an 11 x 11 grid, for the magnitude check below
     load_scale = 0.;
+    const Point<2> &a = geometry.lower, &b = geometry.upper;
     for (unsigned int j = 0; j <= 10; ++j)
       for (unsigned int i = 0; i <= 10; ++i)
-        load_scale = std::max(load_scale,
-                              std::abs(f->value(
-                                Point<2>(0.1 * i * length_x, 0.1 * j * length_y))));
+        {
+          const Point<2> p(a[0] + 0.1 * i * (b[0] - a[0]),
+                           a[1] + 0.1 * j * (b[1] - a[1]));
+          if (geometry.contains(p))
+            load_scale = std::max(load_scale, std::abs(f->value(p)));
+        }
   }
   prm.leave_subsection();
   }
@@ -553,7 +531,7 @@ namespace NitscheContact
         const auto f = make_parsed_function<2>(obstacle_expression, "", 1,
                                                "Obstacle/Height");
         check_finite_on_plate(*f, "Obstacle/Height", obstacle_expression,
-                              length_x, length_y, thickness);
+                              geometry, thickness);
       }
     obstacle_level_is_midplane =
       prm.get("Plate obstacle convention") == "mid-plane";
@@ -633,12 +611,15 @@ namespace NitscheContact
     output_format = prm.get("Format");
     print_timings = prm.get_bool("Print timings");
     // 'centre' / 'centre line' (the defaults) in plate coordinates
-    const Point<2> centre(length_x / 2, length_y / 2);
+    const Point<2> centre = 0.5 * (geometry.lower + geometry.upper);
     probes.clear();
     for (const auto &item :
          Utilities::split_string_list(prm.get("Probe points"), ';'))
       if (item == "centre")
-        probes.push_back(centre);
+        {
+          if (geometry.contains(centre))
+            probes.push_back(centre);
+        }
       else if (!item.empty())
         {
           std::vector<double> c;
@@ -657,7 +638,8 @@ namespace NitscheContact
         }
     std::vector<Point<2>> line;
     if (Utilities::trim(prm.get("Profile line")) == "centre line")
-      line = {Point<2>(0., centre[1]), Point<2>(length_x, centre[1])};
+      line = {Point<2>(geometry.lower[0], centre[1]),
+              Point<2>(geometry.upper[0], centre[1])};
     else
       try
         {
@@ -676,36 +658,40 @@ namespace NitscheContact
     contact_points = prm.get_bool("Contact points");
     contact_points_per_iteration =
       prm.get_bool("Contact points per iteration");
-    // the deflection is only defined on the plate (a point outside would
-    // be reported as NaN); points within round-off of an edge are moved
-    // onto it below
-    const double slack = 1e-10 * std::max(length_x, length_y);
-    const auto   on_plate = [&](const Point<2> &p) {
-      return p[0] >= -slack && p[0] <= length_x + slack && p[1] >= -slack &&
-             p[1] <= length_y + slack;
-    };
+    // the deflection is only defined on the plate (deflection_at() gives
+    // NaN outside); probes must lie on it, the profile line's ends on its
+    // bounding box (points of the line outside the plate are skipped)
     const auto full_precision = [](const double x) {
       std::ostringstream o;
       o << std::setprecision(17) << x;
       return o.str();
     };
-    const std::string plate = "[0, " + number_to_string(length_x) +
-                              "] x [0, " + number_to_string(length_y) + "]";
-    const auto check_on_plate = [&](const std::vector<Point<2>> &points,
-                                    const std::string           &entry) {
-      for (const auto &p : points)
-        if (!on_plate(p))
-          bad_value("Output/" + entry, prm.get(entry),
-                    "the point (" + full_precision(p[0]) + ", " +
-                      full_precision(p[1]) +
-                      ") lies outside the plate " + plate);
-    };
-    check_on_plate(probes, "Probe points");
-    check_on_plate(line, "Profile line");
+    const std::string plate = geometry.description();
+    for (const auto &p : probes)
+      if (!geometry.contains(p))
+        bad_value("Output/Probe points", prm.get("Probe points"),
+                  "the point (" + full_precision(p[0]) + ", " +
+                    full_precision(p[1]) + ") lies outside the plate " +
+                    plate);
+    const double slack = 1e-10 * geometry.size();
+    for (const auto &p : line)
+      if (!(p[0] >= geometry.lower[0] - slack &&
+            p[0] <= geometry.upper[0] + slack &&
+            p[1] >= geometry.lower[1] - slack &&
+            p[1] <= geometry.upper[1] + slack))
+        bad_value("Output/Profile line", prm.get("Profile line"),
+                  "the point (" + full_precision(p[0]) + ", " +
+                    full_precision(p[1]) +
+                    ") lies outside the plate's bounding box [" +
+                    number_to_string(geometry.lower[0]) + ", " +
+                    number_to_string(geometry.upper[0]) + "] x [" +
+                    number_to_string(geometry.lower[1]) + ", " +
+                    number_to_string(geometry.upper[1]) + "]");
+    // points within round-off of the box are moved onto it
     for (std::vector<Point<2>> *points : {&probes, &line})
       for (Point<2> &p : *points)
-        p = Point<2>(std::clamp(p[0], 0., length_x),
-                     std::clamp(p[1], 0., length_y));
+        p = Point<2>(std::clamp(p[0], geometry.lower[0], geometry.upper[0]),
+                     std::clamp(p[1], geometry.lower[1], geometry.upper[1]));
     profile_start = line[0];
     profile_end   = line[1];
     if (line[0].distance(line[1]) == 0.)
@@ -742,7 +728,7 @@ namespace NitscheContact
     // force scale r w L^2 must be finite, nonzero double numbers (overflow
     // or underflow otherwise surfaces mid-run as a non-finite residual or
     // a singular matrix).
-    const double L     = std::max(length_x, length_y);
+    const double L     = geometry.size();
     const double D     = bending_stiffness();
     const double w     = load_scale * (L * L) * (L * L) / D;
     const double tiny  = std::numeric_limits<double>::min();

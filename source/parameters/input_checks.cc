@@ -18,8 +18,7 @@ namespace NitscheContact
   check_finite_on_plate(const Function<dim> &f,
                         const std::string   &entry,
                         const std::string   &expression,
-                        const double         length_x,
-                        const double         length_y,
+                        const PlateGeometry &plate,
                         const double         thickness,
                         const bool           interior)
   {
@@ -32,8 +31,10 @@ namespace NitscheContact
         for (unsigned int k = 0; k < (dim == 3 ? 3u : 1u); ++k)
           {
             Point<dim> p;
-            p[0] = length_x * (i + o) / n;
-            p[1] = length_y * (j + o) / n;
+            p[0] = plate.lower[0] + (plate.upper[0] - plate.lower[0]) * (i + o) / n;
+            p[1] = plate.lower[1] + (plate.upper[1] - plate.lower[1]) * (j + o) / n;
+            if (!plate.contains(Point<2>(p[0], p[1])))
+              continue;
             if (dim == 3)
               p[dim - 1] = interior ?
                              thickness * ((k + 0.5) / 3. - 0.5) :
@@ -56,10 +57,9 @@ namespace NitscheContact
                             "); it must be a finite number " +
                             (interior ? std::string("inside the ") :
                                         std::string("on the whole ")) +
-                            (dim == 3 ? std::string("body [0, ") :
-                                        std::string("plate [0, ")) +
-                            number_to_string(length_x) + "] x [0, " +
-                            number_to_string(length_y) + "]" +
+                            (dim == 3 ? std::string("body ") :
+                                        std::string("plate ")) +
+                            plate.description() +
                             (dim == 3 ? " x [-t/2, t/2]" : ""));
               }
           }
@@ -80,10 +80,10 @@ namespace NitscheContact
 
   template void
   check_finite_on_plate<2>(const Function<2> &, const std::string &,
-                           const std::string &, double, double, double, bool);
+                           const std::string &, const PlateGeometry &, double, bool);
   template void
   check_finite_on_plate<3>(const Function<3> &, const std::string &,
-                           const std::string &, double, double, double, bool);
+                           const std::string &, const PlateGeometry &, double, bool);
 
   std::vector<double>
   parse_doubles(const std::string &text,
@@ -183,22 +183,6 @@ namespace NitscheContact
     std::ostringstream s;
     s << x;
     return s.str();
-  }
-
-  std::string
-  to_string(const EdgeCondition c)
-  {
-    switch (c)
-      {
-        case EdgeCondition::clamped:
-          return "clamped";
-        case EdgeCondition::simply_supported:
-          return "simply supported";
-        case EdgeCondition::symmetry:
-          return "symmetry";
-        default:
-          return "free";
-      }
   }
 
   std::vector<Point<2>>

@@ -98,7 +98,7 @@ CASES = [
      "set Model = mindlin\nsubsection Mindlin\n  set Linear solver = multigrid\nend",
      ["Mindlin/Linear solver", "no longer exists", "'Type'", "'Direct solver'"]),
     ("elasticity tangential traction on a plate free in its plane",
-     "subsection Geometry\n  set Edge conditions = free, free, free, free\nend\n"
+     "subsection Geometry\n  set Boundary conditions = all: free\nend\n"
      "subsection Obstacle\n  set Level = 0.5\nend\n"
      "subsection Elasticity\n  set Top tangential traction = 0.001; 0\nend",
      ["Elasticity/Top tangential traction", "'0.001; 0'", "no resultant", "x1 component"]),
@@ -338,9 +338,51 @@ CASES = [
      ["Geometry/Length x", "'0'", "> 0"]),
     ("Length y < 0", "subsection Geometry\n  set Length y = -3\nend",
      ["Geometry/Length y", "-3", "> 0"]),
-    ("three edge conditions",
-     "subsection Geometry\n  set Edge conditions = clamped, clamped, free\nend",
-     ["Geometry/Edge conditions", "clamped, clamped, free", "four conditions"]),
+    ("the replaced entry Edge conditions",
+     "subsection Geometry\n  set Edge conditions = clamped, clamped, free, free\nend",
+     ["Geometry/Edge conditions", "no longer exists", "Geometry/Boundary conditions"]),
+    ("boundary condition without id",
+     "subsection Geometry\n  set Boundary conditions = 0 clamped\nend",
+     ["Geometry/Boundary conditions", "'0 clamped'", "id: condition"]),
+    ("unknown boundary condition",
+     "subsection Geometry\n  set Boundary conditions = 0: glued; all: free\nend",
+     ["Geometry/Boundary conditions", "'glued' is no condition", "simply supported"]),
+    ("boundary id the mesh does not have",
+     "subsection Geometry\n  set Boundary conditions = 5: free; all: clamped\nend",
+     ["Geometry/Boundary conditions", "no boundary id 5", "0, 1, 2, 3"]),
+    ("boundary id without a condition",
+     "subsection Geometry\n  set Boundary conditions = 0: clamped; 1: free\nend",
+     ["Geometry/Boundary conditions", "boundary id 2", "has no condition"]),
+    ("a plate model on a disk",
+     "set Model = kirchhoff\nsubsection Geometry\n  set Shape = disk\nend",
+     ["Geometry/Shape", "'disk'", "rectangle only", "membrane"]),
+    ("the 3D model on an L-shape",
+     "subsection Geometry\n  set Shape = L-shape\n  set Subdivisions = 2, 2, 1\nend",
+     ["Geometry/Shape", "'L-shape'", "rectangle only"]),
+    ("annulus inner radius above the radius",
+     "set Model = membrane\nsubsection Geometry\n  set Shape = annulus\n"
+     "  set Radius = 2\n  set Inner radius = 3\nend",
+     ["Geometry/Inner radius", "'3'", "(0, Radius)"]),
+    ("hole off the grid lines",
+     "set Model = membrane\nsubsection Geometry\n  set Shape = rectangle with hole\n"
+     "  set Hole size = 3, 3\n  set Subdivisions = 8, 8\nend",
+     ["Geometry/Hole size", "'3, 3'", "lines of the coarse grid"]),
+    ("L-shape with an odd number of cells",
+     "set Model = membrane\nsubsection Geometry\n  set Shape = L-shape\n"
+     "  set Subdivisions = 7, 8\nend",
+     ["Geometry/Subdivisions", "'7, 8'", "even"]),
+    ("missing mesh file",
+     "set Model = membrane\nsubsection Geometry\n  set Shape = mesh file\n"
+     "  set Mesh file = no_such_mesh.msh\nend",
+     ["Geometry/Mesh file", "no_such_mesh.msh", "cannot be read"]),
+    ("mesh file of an unknown format",
+     "set Model = membrane\nsubsection Geometry\n  set Shape = mesh file\n"
+     "  set Mesh file = case00.prm\nend",
+     ["Geometry/Mesh file", "case00.prm", "Gmsh (.msh)"]),
+    ("probe outside the disk",
+     "set Model = membrane\nsubsection Geometry\n  set Shape = disk\nend\n"
+     "subsection Output\n  set Probe points = 0.5, 0.5\nend",
+     ["Output/Probe points", "(0.5, 0.5)", "outside the plate", "disk"]),
     ("one subdivision count", "subsection Geometry\n  set Subdivisions = 8\nend",
      ["Geometry/Subdivisions", "'8'", "nx, ny"]),
     ("sphere radius 0",
@@ -438,7 +480,7 @@ check(r.returncode == 1 and "cannot read '%s'" % bad_xml in r.stderr
 singular = os.path.join(args.workdir, "singular.prm")
 with open(singular, "w") as f:
     f.write("set Model = kirchhoff\nsubsection Geometry\n  set Subdivisions = 4, 4\n"
-            "  set Edge conditions = free, free, free, free\nend\n"
+            "  set Boundary conditions = all: free\nend\n"
             "subsection Output\n  set Directory = %s\n  set Format = none\nend\n"
             % os.path.join(args.workdir, "singular-out"))
 r = execute([singular])

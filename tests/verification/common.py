@@ -160,7 +160,7 @@ subsection Geometry
   set Length x = 2
   set Length y = 1
   set Thickness = 0.2
-  set Edge conditions = free, free, symmetry, symmetry
+  set Boundary conditions = 0: free; 1: free; 2: symmetry; 3: symmetry
   set Subdivisions = %(sub)s
 end
 subsection Material

@@ -189,7 +189,7 @@ subsection Geometry
   set Length x = 1
   set Length y = 1
   set Thickness = %r
-  set Edge conditions = clamped, clamped, clamped, clamped
+  set Boundary conditions = all: clamped
   set Subdivisions = 2, 2, %d
 end
 subsection Material

@@ -17,7 +17,11 @@ the page says, each against an independent value:
    plate without friction to 1 %;
  - elastic_foundation: the free plate's foundation carries the whole
    applied load, 6.25, to 1e-8 (balance), and the corners lift off;
- - manufactured: the last rates are 2 (L2) and 1 (H1) to 0.05."""
+ - manufactured: the last rates are 2 (L2) and 1 (H1) to 0.05;
+ - mesh_file: the load on the plate is q times the area of the square
+   less the 32-gon of the hole (the mesh's straight edges), to 1e-10; the
+   solution has the mesh's symmetries x -> 10 - x and x <-> y to 1e-8; the
+   free hole edge rests on the plane and the clamped edge does not move."""
 import math, os, re, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from common import parse_args, run, check, close, finish
@@ -120,4 +124,20 @@ check(c["max_deflection"] > 0, "elastic_foundation: the corners lift off (max w 
 c = solve("manufactured")
 check(abs(c["rates"]["L2"] - 2) <= 0.05 and abs(c["rates"]["H1"] - 1) <= 0.05,
       "manufactured: rates L2 %.3f, H1 %.3f" % (c["rates"]["L2"], c["rates"]["H1"]))
+
+# mesh file: the plate's area, the mesh's symmetries and its boundary ids
+mesh = os.path.join(root, "parameters", "meshes", "plate_with_hole.msh")
+text = set_entry(recipes["mesh_file"], "Mesh file", mesh)
+text = set_entry(text, "Probe points", "3.5, 5; 6.5, 5; 5, 3.5; 2, 3; 8, 3; 3, 2; 0, 5; 1.5, 9")
+c = solve("mesh_file", text)
+area = 100 - 16 * 1.5 ** 2 * math.sin(2 * math.pi / 32)
+close(dict(c["extra"])["load_total"], -0.02 * area, 1e-10,
+      "mesh_file: the load on the square less the 32-gon of the hole")
+w = c["probes"]
+check(max(abs(w[0] - w[1]), abs(w[0] - w[2]), abs(w[3] - w[4]), abs(w[3] - w[5])) < 1e-8,
+      "mesh_file: w is symmetric (%s)" % ", ".join("%.10f" % x for x in w[:6]))
+check(abs(w[0] + 0.09) < 1e-4 and c["contact_force"] > 0,
+      "mesh_file: the free hole edge rests on the plane z = -0.09 (w = %.6f)" % w[0])
+check(w[6] == 0 and w[7] < -0.01,
+      "mesh_file: the clamped edge (id 1) stays at 0, the plate inside sags (%.4f)" % w[7])
 finish()

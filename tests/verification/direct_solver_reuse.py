@@ -83,7 +83,7 @@ def compare(tag, kept, fresh, tol, identical):
 probes = "0.5, 0.5; 0.2, 0.5; 0.1, 0.1; 1.5, 0.5"
 for theta in (1, -1):
     variant = dict(lx=2.0, ly=1.0, sub=(16, 8), cycles=2, load=-1, level=-5e-4, probes=probes,
-                   edges="clamped, simply supported, clamped, clamped", theta=theta,
+                   edges="0: clamped; 1: simply supported; 2: clamped; 3: clamped", theta=theta,
                    alpha=1e-4 if theta == 1 else 1e-3)
     kept, _ = run(args, "kirchhoff_theta%d" % theta, plate_prm(**variant))
     fresh, _ = run(args, "kirchhoff_theta%d_no_reuse" % theta,

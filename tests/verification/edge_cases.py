@@ -66,7 +66,7 @@ LIFT = """
 set Model = %s
 subsection Geometry
   set Subdivisions = %s
-  set Edge conditions = free, free, free, free
+  set Boundary conditions = all: free
   set Number of cycles = 1
 end
 subsection Obstacle
@@ -170,7 +170,7 @@ SS = """
 set Model = kirchhoff
 subsection Geometry
   set Subdivisions = 1, 1
-  set Edge conditions = simply supported, simply supported, simply supported, simply supported
+  set Boundary conditions = all: simply supported
   set Number of cycles = 1
 end
 subsection Obstacle
@@ -305,7 +305,7 @@ for after in ("3", "0"):
 FAR = """set Model = mindlin
 subsection Geometry
   set Subdivisions = 2, 2
-  set Edge conditions = free, free, free, free
+  set Boundary conditions = all: free
 end
 subsection Obstacle
   set Level = %s

@@ -54,7 +54,7 @@ subsection Geometry
   set Length x = 1
   set Length y = 1
   set Thickness = %(t)r
-  set Edge conditions = symmetry, free, symmetry, free
+  set Boundary conditions = 0: symmetry; 1: free; 2: symmetry; 3: free
   set Subdivisions = 4, 4, 8
   set Number of cycles = 1
 end

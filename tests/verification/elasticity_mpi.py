@@ -50,7 +50,7 @@ ss = """set Model = elasticity
 subsection Geometry
   set Length x = 10
   set Length y = 6
-  set Edge conditions = simply supported, simply supported, simply supported, simply supported
+  set Boundary conditions = all: simply supported
   set Subdivisions = 8, 8, 1
 end
 subsection Obstacle
@@ -76,8 +76,8 @@ for i, (pa, pb) in enumerate(zip(a["probes"], b["probes"])):
 # cells is the same discrete problem: the same probe, a quarter of the force.
 quarter = ss.replace("set Length x = 10", "set Length x = 5").replace(
     "set Length y = 6", "set Length y = 3").replace(
-    "simply supported, simply supported, simply supported, simply supported",
-    "simply supported, symmetry, simply supported, symmetry").replace(
+    "all: simply supported",
+    "0: simply supported; 1: symmetry; 2: simply supported; 3: symmetry").replace(
     "set Subdivisions = 8, 8, 1", "set Subdivisions = 4, 4, 1").replace(
     "set Probe points = 5, 3; 2, 1.5", "set Probe points = 5, 3; 2, 1.5")
 q, _ = run(args, "ss_quarter", quarter)
@@ -90,7 +90,7 @@ for i, (pa, pq) in enumerate(zip(a["probes"], cq["probes"])):
 
 lifted = """set Model = elasticity
 subsection Geometry
-  set Edge conditions = free, free, free, free
+  set Boundary conditions = all: free
   set Subdivisions = 2, 2, 1
 end
 subsection Obstacle

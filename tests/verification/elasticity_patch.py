@@ -45,7 +45,7 @@ subsection Geometry
   set Length x = 1
   set Length y = 1
   set Thickness = 1
-  set Edge conditions = %(edges)s
+  set Boundary conditions = %(edges)s
   set Subdivisions = 3, 2, 2
   set Number of cycles = 1
 end
@@ -87,11 +87,11 @@ end
 CASES = {
     # name: (edges, exact solution, constants, (a, b)) with u1 = a x,
     # u2 = a y, u3 = -b (z + 1/2)
-    "frictionless": ("symmetry, free, symmetry, free",
+    "frictionless": ("0: symmetry; 1: free; 2: symmetry; 3: free",
                      "nu*p*x/E; nu*p*y/E; -p*(z+0.5)/E",
                      "E=%r, nu=%r, p=%r" % (E, NU, P),
                      (NU * P / E, P / E)),
-    "friction": ("symmetry, symmetry, symmetry, symmetry",
+    "friction": ("all: symmetry",
                  "0; 0; -p*(z+0.5)/M",
                  "M=%r, p=%r" % (LAM + 2 * MU, P),
                  (0.0, P / (LAM + 2 * MU))),

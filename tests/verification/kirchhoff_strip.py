@@ -27,7 +27,7 @@ xs = [0.1, 0.2, 0.5]
 probes = "; ".join("%g, %g" % (x, H / 2) for x in xs)
 s, log = run(args, "strip",
              plate_prm(lx=L, ly=H, sub=(16, 4), cycles=3, load=-q, level=-g0,
-                       edges="clamped, clamped, symmetry, symmetry", probes=probes,
+                       edges="0: clamped; 1: clamped; 2: symmetry; 3: symmetry", probes=probes,
                        extra="subsection Nonlinear solver\n  set Print iterations = true\nend\n"))
 # nested iteration: the cycles after the first start from the previous
 # solution (exact in the finer Hermite space), so their first correction is

@@ -31,7 +31,7 @@ probes = "; ".join("%g, %g" % (x, W / 2) for x in xs)
 def strip(name, cycles, **kw):
     s, log = run(args, name,
                  membrane_prm(lx=L, ly=W, sub=(8, 2), cycles=cycles, load=q, tension=T,
-                              edges="clamped, clamped, free, free", probes=probes,
+                              edges="0: clamped; 1: clamped; 2: free; 3: free", probes=probes,
                               obstacle="set Type = plane\n  set Level = %r" % -d, **kw))
     deflection_errors = []
     for c in s["cycles"]:
@@ -107,7 +107,7 @@ for degree in (1, 2):
     name = "compliant_q%d" % degree
     s, _ = run(args, name,
                membrane_prm(lx=L, ly=W, sub=(8, 2), cycles=5, load=q, tension=T, degree=degree,
-                            edges="clamped, clamped, free, free", probes=probes,
+                            edges="0: clamped; 1: clamped; 2: free; 3: free", probes=probes,
                             obstacle="set Type = plane\n  set Level = %r" % -d,
                             extra="subsection Contact\n  set Obstacle compliance = %r\nend\n"
                             % kappa))

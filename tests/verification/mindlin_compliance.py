@@ -42,7 +42,7 @@ subsection Geometry
   set Length x = 1
   set Length y = 1
   set Thickness = %g
-  set Edge conditions = free, free, free, free
+  set Boundary conditions = all: free
   set Subdivisions = 8, 8
   set Number of cycles = 2
 end

@@ -46,7 +46,7 @@ subsection Geometry
   set Length x = %(lx)s
   set Length y = %(ly)s
   set Thickness = 0.01
-  set Edge conditions = %(edges)s
+  set Boundary conditions = %(edges)s
   set Subdivisions = %(sub)s
   set Number of cycles = %(cycles)d
 end
@@ -89,20 +89,19 @@ def average_krylov(cycle):
 
 cases = [
     ("paper", dict(lx=10, ly=10, sub="8, 8", cycles=4, load=-0.02, level=-1, theta=1,
-                   edges="clamped, clamped, clamped, clamped", support="hard",
+                   edges="all: clamped", support="hard",
                    probes="5, 5; 2.5, 5; 1, 5; 2.5, 2.5")),
     ("mixed", dict(lx=4, ly=2, sub="16, 8", cycles=2, load=-0.02, level=-0.2, theta=0,
-                   edges="clamped, simply supported, symmetry, free", support="hard",
+                   edges="0: clamped; 1: simply supported; 2: symmetry; 3: free", support="hard",
                    probes="2, 1; 1, 0.5; 3.5, 1.5; 0.5, 1.9")),
     ("mixed_soft", dict(lx=4, ly=2, sub="16, 8", cycles=2, load=-0.02, level=-0.2, theta=0,
-                        edges="clamped, simply supported, symmetry, free", support="soft",
+                        edges="0: clamped; 1: simply supported; 2: symmetry; 3: free", support="soft",
                         probes="2, 1; 1, 0.5; 3.5, 1.5; 0.5, 1.9")),
     ("simply_supported", dict(lx=10, ly=10, sub="8, 8", cycles=3, load=-0.02, level=-1, theta=1,
-                              edges="simply supported, simply supported, simply supported, "
-                                    "simply supported", support="hard",
+                              edges="all: simply supported", support="hard",
                               probes="5, 5; 2.5, 5; 1, 5; 2.5, 2.5")),
     ("supported_free", dict(lx=4, ly=2, sub="16, 8", cycles=2, load=-0.02, level=-0.2, theta=0,
-                            edges="simply supported, simply supported, free, free",
+                            edges="0: simply supported; 1: simply supported; 2: free; 3: free",
                             support="soft", probes="2, 1; 1, 0.5; 3.5, 1.5; 0.5, 1.9")),
 ]
 for tag, case in cases:

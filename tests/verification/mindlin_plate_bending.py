@@ -33,7 +33,7 @@ subsection Geometry
   set Length x = 1
   set Length y = 1
   set Thickness = %(t)g
-  set Edge conditions = %(bc)s, %(bc)s, %(bc)s, %(bc)s
+  set Boundary conditions = all: %(bc)s
   set Subdivisions = %(n)d, %(n)d
 end
 subsection Material
@@ -125,7 +125,7 @@ subsection Geometry
   set Length x = 1
   set Length y = 1
   set Thickness = %g
-  set Edge conditions = simply supported, simply supported, simply supported, simply supported
+  set Boundary conditions = all: simply supported
   set Subdivisions = %d, %d
   set Number of cycles = 4
 end
@@ -209,7 +209,7 @@ subsection Geometry
   set Length x = 1
   set Length y = 2
   set Thickness = 0.1
-  set Edge conditions = clamped, clamped, clamped, clamped
+  set Boundary conditions = all: clamped
   set Subdivisions = 3, 4
 end
 subsection Load

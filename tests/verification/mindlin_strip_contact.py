@@ -40,7 +40,7 @@ subsection Geometry
   set Length x = 10
   set Length y = 1
   set Thickness = 0.01
-  set Edge conditions = clamped, clamped, symmetry, symmetry
+  set Boundary conditions = 0: clamped; 1: clamped; 2: symmetry; 3: symmetry
   set Subdivisions = %d, 1
   set Number of cycles = 5
 end

@@ -192,7 +192,7 @@ subsection Geometry
   set Length x = 1
   set Length y = 1
   set Thickness = 0.01
-  set Edge conditions = simply supported, simply supported, simply supported, simply supported
+  set Boundary conditions = all: simply supported
   set Subdivisions = %s
 end
 subsection Material

@@ -30,7 +30,7 @@ subsection Geometry
   set Length x = 10
   set Length y = 10
   set Thickness = 0.01
-  set Edge conditions = clamped, clamped, clamped, clamped
+  set Boundary conditions = all: clamped
 end
 subsection Material
   set Young's modulus = 2e5

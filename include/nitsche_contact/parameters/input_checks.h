@@ -9,6 +9,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <nitsche_contact/geometry/plate_geometry.h>
+
 #include <memory>
 #include <new>
 #include <stdexcept>
@@ -92,7 +94,8 @@ namespace NitscheContact
                        const std::string &entry);
 
   /// A parsed function must be finite on the plate: every component is
-  /// evaluated on a 101 x 101 grid of [0, Lx] x [0, Ly] (for dim = 3 at
+  /// evaluated on the points of the plate of a 101 x 101 grid of its
+  /// bounding box (for dim = 3 at
   /// z = -t/2, 0, t/2); a NaN or an infinity (sqrt or log outside their
   /// domain) would otherwise spread through the solution or, in a gap,
   /// silently switch the obstacle off. bad_value(entry, expression) if not.
@@ -107,8 +110,7 @@ namespace NitscheContact
   check_finite_on_plate(const dealii::Function<dim> &f,
                         const std::string           &entry,
                         const std::string           &expression,
-                        double                       length_x,
-                        double                       length_y,
+                        const PlateGeometry         &plate,
                         double                       thickness,
                         bool                         interior = false);
 

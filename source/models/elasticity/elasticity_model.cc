@@ -31,11 +31,12 @@ namespace NitscheContact
     // the checks of the common input that depend on the model: a
     // hexahedron refines into 8, r = gamma0 E / t, and the contact surface
     // is the bottom face
+    require_rectangle(prm.geometry, "elasticity", "the membrane model solves every shape");
     prm.check_first_mesh_size(8);
     prm.use_model_gamma0(60.);
     prm.check_magnitudes(prm.gamma0 * prm.youngs_modulus / prm.thickness);
     if (prm.obstacle_is_rigid())
-      prm.check_obstacle_below_supported_edges(-0.5 * prm.thickness);
+      prm.check_obstacle_below_supports(-0.5 * prm.thickness);
     friction = prm.friction;
     read_parameters(ph);
     make_load_functions();
@@ -47,7 +48,7 @@ namespace NitscheContact
                                   "Reference solution/Exact solution");
         check_finite_on_plate(*exact_solution,
                               "Reference solution/Exact solution",
-                              prm.exact_solution, prm.length_x, prm.length_y,
+                              prm.exact_solution, prm.geometry,
                               prm.thickness);
       }
   }
@@ -62,9 +63,7 @@ namespace NitscheContact
       {"nu", s(prm.poisson_ratio)},
       {"thickness", s(prm.thickness)},
       {"plate", s(prm.length_x) + " x " + s(prm.length_y)},
-      {"edges", to_string(prm.edges[0]) + ", " + to_string(prm.edges[1]) +
-                  ", " + to_string(prm.edges[2]) + ", " +
-                  to_string(prm.edges[3])},
+      {"boundary conditions", prm.geometry.conditions.text()},
       {"theta", s(prm.theta)},
       {"gamma0", s(prm.gamma0)},
       {"r", "gamma0 E / h_n, h_n = |K|/|F| (cell height normal to the "

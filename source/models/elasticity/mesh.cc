@@ -185,7 +185,7 @@ namespace NitscheContact
     for (unsigned int e = 0; e < 4; ++e)
       {
         ComponentMask mask(3, false);
-        switch (prm.edges[e])
+        switch (prm.boundary_condition(e))
           {
             case EdgeCondition::clamped:
               mask = ComponentMask(3, true);
@@ -250,9 +250,9 @@ namespace NitscheContact
       return;
     bool x_symmetry = false, y_symmetry = false;
     for (unsigned int e = 0; e < 4; ++e)
-      if (prm.edges[e] == EdgeCondition::clamped)
+      if (prm.boundary_condition(e) == EdgeCondition::clamped)
         return;
-      else if (prm.edges[e] == EdgeCondition::symmetry)
+      else if (prm.boundary_condition(e) == EdgeCondition::symmetry)
         (e < 2 ? x_symmetry : y_symmetry) = true;
     // a symmetry face x = const (u1 = 0 on it) holds the translation along
     // x1 and the rotation, one y = const the translation along x2 and the

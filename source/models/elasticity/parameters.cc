@@ -282,7 +282,7 @@ namespace NitscheContact
                               "Elasticity/Top tangential traction");
     check_finite_on_plate(*traction_function,
                           "Elasticity/Top tangential traction",
-                          tangential_traction, prm.length_x, prm.length_y,
+                          tangential_traction, prm.geometry,
                           prm.thickness);
     // a clamped top face takes no traction: it would vanish silently
     if (top_clamped && load_as_traction)

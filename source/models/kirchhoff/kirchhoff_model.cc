@@ -126,12 +126,8 @@ namespace NitscheContact
   void
   KirchhoffModel::make_grid()
   {
-    GridGenerator::subdivided_hyper_rectangle(
-      triangulation,
-      {prm.subdivisions[0], prm.subdivisions[1]},
-      Point<2>(0., 0.),
-      Point<2>(prm.length_x, prm.length_y),
-      /*colorize: ids 0..3 on x=0, x=Lx, y=0, y=Ly*/ true);
+    // boundary ids 0, 1, 2, 3 on x = 0, x = Lx, y = 0, y = Ly
+    prm.make_coarse_mesh(triangulation);
     triangulation.refine_global(prm.initial_refinement);
     nx = prm.subdivisions[0] << prm.initial_refinement;
     ny = prm.subdivisions[1] << prm.initial_refinement;
@@ -167,7 +163,7 @@ namespace NitscheContact
     constraints.clear();
     for (unsigned int b = 0; b < 4; ++b)
       {
-        const EdgeCondition e = prm.edges[b];
+        const EdgeCondition e = prm.boundary_condition(b);
         HermiteTools::make_zero_boundary_constraints(
           dof_handler,
           b,

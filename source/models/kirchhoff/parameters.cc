@@ -200,10 +200,11 @@ namespace NitscheContact
     // the checks of the common input that depend on the model: a plate
     // cell refines into 4, the contact surface is the bottom face or the
     // mid-plane, and a compliant obstacle may lie above a supported edge
+    require_rectangle(prm.geometry, "kirchhoff", "the membrane model solves every shape");
     prm.check_first_mesh_size(4);
     prm.check_magnitudes(0.);
     if (prm.obstacle_is_rigid())
-      prm.check_obstacle_below_supported_edges(
+      prm.check_obstacle_below_supports(
         prm.obstacle_level_is_midplane ? 0. : -0.5 * prm.thickness);
     if (!(alpha_D >= 0.))
       bad_value("Kirchhoff/Stabilisation alpha", number_to_string(alpha_D), "must be >= 0");
@@ -257,7 +258,7 @@ namespace NitscheContact
                           std::string("Kirchhoff/Exact Hessian"),
                           exact_hessian_text)})
       if (f != nullptr)
-        check_finite_on_plate(*f, entry, text, prm.length_x, prm.length_y,
+        check_finite_on_plate(*f, entry, text, prm.geometry,
                               prm.thickness, true);
     if ((exact_gradient || exact_hessian) && !exact_value)
       bad_value(exact_gradient ? "Kirchhoff/Exact gradient" :

@@ -95,12 +95,8 @@ namespace NitscheContact
   void
   MembraneModel::make_grid()
   {
-    GridGenerator::subdivided_hyper_rectangle(
-      triangulation,
-      {prm.subdivisions[0], prm.subdivisions[1]},
-      Point<2>(0., 0.),
-      Point<2>(prm.length_x, prm.length_y),
-      /*colorize: ids 0..3 on x=0, x=Lx, y=0, y=Ly*/ true);
+    // the plate's shape, its boundary ids and curved-edge manifolds
+    prm.make_coarse_mesh(triangulation);
     triangulation.refine_global(prm.initial_refinement);
   }
 
@@ -112,12 +108,13 @@ namespace NitscheContact
     dof_handler.distribute_dofs(*fe);
     factorization.clear();
 
-    // w = 0 on clamped and simply supported edges; free and symmetry
-    // edges are natural (dw/dn = 0 for symmetry, T dw/dn = 0 for free)
+    // w = 0 on clamped and simply supported boundary parts; free and
+    // symmetry parts are natural (dw/dn = 0 for symmetry, T dw/dn = 0 for
+    // free)
     constraints.clear();
-    for (unsigned int b = 0; b < 4; ++b)
-      if (prm.edges[b] == EdgeCondition::clamped ||
-          prm.edges[b] == EdgeCondition::simply_supported)
+    for (const auto b : prm.geometry.boundary_ids)
+      if (prm.boundary_condition(b) == EdgeCondition::clamped ||
+          prm.boundary_condition(b) == EdgeCondition::simply_supported)
         VectorTools::interpolate_boundary_values(
           mapping, dof_handler, b, Functions::ZeroFunction<2>(), constraints);
     constraints.close();

@@ -92,7 +92,7 @@ namespace NitscheContact
     prm.check_first_mesh_size(4);
     // a rigid obstacle above a supported edge (w = 0) leaves no solution
     if (prm.obstacle_is_rigid())
-      prm.check_obstacle_below_supported_edges(0.);
+      prm.check_obstacle_below_supports(0.);
     if (!prm.exact_solution.empty())
       check_finite_on_plate(*make_parsed_function<2>(prm.exact_solution,
                                                      prm.exact_constants,
@@ -100,8 +100,7 @@ namespace NitscheContact
                                                      "Reference solution/Exact solution"),
                             "Reference solution/Exact solution",
                             prm.exact_solution,
-                            prm.length_x,
-                            prm.length_y,
+                            prm.geometry,
                             prm.thickness,
                             true);
   }

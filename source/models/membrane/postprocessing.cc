@@ -166,7 +166,7 @@ namespace NitscheContact
   MembraneModel::compute_errors(CycleResults &res) const
   {
     const ExactWithGradient exact(*exact_solution,
-                                  1e-3 * std::max(prm.length_x, prm.length_y));
+                                  1e-3 * prm.geometry.size());
     const QGauss<2>         quadrature(degree + 3);
     Vector<float>           cell_errors(triangulation.n_active_cells());
     for (const auto &[name, norm] :

@@ -206,7 +206,7 @@ namespace NitscheContact
     std::vector<bool>  constrained(4 * nvx * nvy, false);
     for (unsigned int e = 0; e < 4; ++e)
       {
-        const EdgeCondition c = prm.edges[e];
+        const EdgeCondition c = prm.boundary_condition(e);
         const bool value_zero = (c == EdgeCondition::clamped ||
                                  c == EdgeCondition::simply_supported);
         const bool normal_zero =

@@ -29,11 +29,12 @@ namespace NitscheContact
     // the 3D model's predictor, whose input the 3D model checks): a plate
     // cell refines into 4, the Nitsche parameter is gamma0 E / t, and a
     // compliant obstacle may lie above a supported edge
+    require_rectangle(common.geometry, "mindlin", "the membrane model solves every shape");
     common.check_first_mesh_size(4);
     common.check_magnitudes(prm.gamma0 * common.youngs_modulus /
                             common.thickness);
     if (common.obstacle_is_rigid())
-      common.check_obstacle_below_supported_edges(
+      common.check_obstacle_below_supports(
         common.obstacle_level_is_midplane ? 0. : -0.5 * common.thickness);
   }
 
@@ -106,8 +107,7 @@ namespace NitscheContact
                                   "Reference solution/Exact solution");
         check_finite_on_plate(*exact_solution,
                               "Reference solution/Exact solution",
-                              common.exact_solution, common.length_x,
-                              common.length_y, common.thickness, true);
+                              common.exact_solution, common.geometry, common.thickness, true);
       }
   }
 
@@ -132,10 +132,7 @@ namespace NitscheContact
     d.emplace_back("thickness", number_to_string(prm.thickness));
     d.emplace_back("E", number_to_string(prm.youngs_modulus));
     d.emplace_back("nu", number_to_string(prm.poisson_ratio));
-    d.emplace_back("edges",
-                   to_string(prm.edges[0]) + ", " + to_string(prm.edges[1]) +
-                     ", " + to_string(prm.edges[2]) + ", " +
-                     to_string(prm.edges[3]));
+    d.emplace_back("boundary conditions", prm.geometry.conditions.text());
     d.emplace_back("theta", number_to_string(prm.theta));
     d.emplace_back("gamma0", number_to_string(prm.gamma0));
     d.emplace_back("Nitsche length h_n",
@@ -161,14 +158,8 @@ namespace NitscheContact
   void
   MindlinModel::make_grid()
   {
-    // colorize = true: boundary ids 0, 1, 2, 3 on x=0, x=Lx, y=0, y=Ly,
-    // which is the order of CommonParameters::edges.
-    GridGenerator::subdivided_hyper_rectangle(
-      triangulation,
-      {prm.subdivisions[0], prm.subdivisions[1]},
-      Point<2>(0., 0.),
-      Point<2>(prm.length_x, prm.length_y),
-      true);
+    // boundary ids 0, 1, 2, 3 on x = 0, x = Lx, y = 0, y = Ly
+    prm.make_coarse_mesh(triangulation);
     triangulation.refine_global(prm.initial_refinement);
   }
 
@@ -202,7 +193,7 @@ namespace NitscheContact
         cell_grid[static_cast<std::size_t>(j) * nx + i] = cell;
       }
 
-    // Edge conditions (doc/theory.md 3.4): clamped: everything zero; hard
+    // Boundary conditions (doc/theory.md 3.4): clamped: everything zero; hard
     // simple support: w and the tangential rotation zero (soft: w only),
     // membrane fixed; symmetry: normal rotation and normal membrane
     // displacement zero; free: natural.
@@ -213,7 +204,7 @@ namespace NitscheContact
         const unsigned int normal     = e / 2; // 0: x = const, 1: y = const
         const unsigned int tangential = 1 - normal;
         std::vector<bool>  mask(n_comp, false);
-        switch (prm.edges[e])
+        switch (prm.boundary_condition(e))
           {
             case EdgeCondition::clamped:
               std::fill(mask.begin(), mask.end(), true);

@@ -5,7 +5,7 @@ module in a subfolder, so that the CMake glob does not run it as a test)."""
 E_UNIT_D = 12 * (1 - 0.3 ** 2) / 0.01 ** 3
 
 
-def plate_prm(lx=1.0, ly=1.0, sub=(8, 8), cycles=1, edges="clamped, clamped, clamped, clamped",
+def plate_prm(lx=1.0, ly=1.0, sub=(8, 8), cycles=1, edges="all: clamped",
               load="1", level=-1e6, convention="mid-plane", theta=1, alpha=1e-4, kappa=0.0,
               formulation="gsv", scheme="newton", probes="0.5, 0.5", extra=""):
     return f"""set Model = kirchhoff
@@ -13,7 +13,7 @@ subsection Geometry
   set Length x = {lx}
   set Length y = {ly}
   set Thickness = 0.01
-  set Edge conditions = {edges}
+  set Boundary conditions = {edges}
   set Subdivisions = {sub[0]}, {sub[1]}
   set Number of cycles = {cycles}
 end

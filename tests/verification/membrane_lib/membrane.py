@@ -3,7 +3,7 @@ module in a subfolder, so that the CMake glob does not run it as a test)."""
 
 
 def membrane_prm(lx=1.0, ly=1.0, sub=(4, 4), refinement=0, cycles=1,
-                 edges="clamped, clamped, clamped, clamped", load="1",
+                 edges="all: clamped", load="1",
                  obstacle="set Type = plane\n  set Level = -1e6", tension=1.0,
                  degree=1, alpha=0.01, rule="gauss", points=3, theta=1,
                  scheme="newton", probes="0.5, 0.5", exact="", compliance="0", extra=""):
@@ -11,7 +11,7 @@ def membrane_prm(lx=1.0, ly=1.0, sub=(4, 4), refinement=0, cycles=1,
 subsection Geometry
   set Length x = {lx!r}
   set Length y = {ly!r}
-  set Edge conditions = {edges}
+  set Boundary conditions = {edges}
   set Subdivisions = {sub[0]}, {sub[1]}
   set Initial refinement = {refinement}
   set Number of cycles = {cycles}

@@ -1,0 +1,199 @@
+"""The membrane on the built-in shapes and on a mesh file, against closed
+forms (T = 1, q = -1, so -Laplace(w) = -1, and w = r^2/4 + A ln r + B in
+an axisymmetric free region):
+
+- the clamped unit disk: w = (r^2 - 1)/4; the L2 and H1 errors fall at the
+  rates 2 and 1 of Q1 (the curved edge by its manifold and a Q1 mapping);
+- the clamped unit disk on the plane w >= -0.1: the membrane rests on the
+  disk r <= b, where w(b) = -0.1 and w'(b) = 0 give b^2/4 - (b^2/2) ln b
+  - 1/4 = -0.1; the reaction is |q| pi b^2 (no line force at r = b);
+- the annulus 0.5 < r < 1, clamped outside (id 0) and free inside (id 1):
+  w(1) = 0 and w'(0.5) = 0 give A = -1/8, B = -1/4;
+- the L-shape and the rectangle with hole on a plane obstacle, built in and
+  read from a Gmsh file (the L-shape) or a UCD file (the rectangle with
+  hole) of the same cells and boundary ids: the same solution to
+  round-off."""
+import math, os, sys
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from common import parse_args, run, check, finish
+
+args = parse_args()
+
+BASE = """set Model = membrane
+subsection Geometry
+  %(geometry)s
+  set Initial refinement = %(refinement)d
+  set Number of cycles = %(cycles)d
+end
+subsection Load
+  set Transverse load = -1
+end
+subsection Obstacle
+  set Type = plane
+  set Level = %(level)r
+end
+subsection Membrane
+  set Tension = 1
+end
+subsection Nonlinear solver
+  set Tolerance = 1e-10
+  set Maximum iterations = 100
+end
+subsection Reference solution
+  set Exact solution = %(exact)s
+end
+subsection Output
+  set Probe points = %(probes)s
+end
+"""
+
+
+def membrane(name, geometry, level=-1e6, refinement=1, cycles=4, exact="", probes="0, 0"):
+    s, _ = run(args, name, BASE % dict(geometry=geometry, level=level, refinement=refinement,
+                                       cycles=cycles, exact=exact, probes=probes))
+    for c in s["cycles"]:
+        check(c["converged"], "%s cycle %d: converged" % (name, c["cycle"]))
+    return s["cycles"]
+
+
+def rates(cycles, norm):
+    e = [c["errors"][norm] for c in cycles]
+    return e, [math.log2(a / b) for a, b in zip(e, e[1:])]
+
+
+DISK = "set Shape = disk\n  set Center = 0, 0\n  set Radius = 1\n  set Boundary conditions = all: clamped"
+
+# 1. the clamped disk without obstacle
+cycles = membrane("disk", DISK, exact="(x^2 + y^2 - 1)/4", probes="0, 0; 0.5, 0")
+for norm, expected in (("L2", 2.0), ("H1", 1.0)):
+    e, r = rates(cycles, norm)
+    check(r[-1] >= expected - 0.1,
+          "disk: %s error %s falls at the rate %.2f >= %.1f"
+          % (norm, ", ".join("%.2e" % x for x in e), r[-1], expected - 0.1))
+w0 = cycles[-1]["probes"][0]
+check(abs(w0 + 0.25) < 2e-4, "disk: w(0) = %.6f vs -1/4" % w0)
+
+# 2. the clamped disk on the plane w >= -0.1
+d = 0.1
+lo, hi = 0.3, 0.9
+for _ in range(60):
+    b = 0.5 * (lo + hi)
+    if b * b / 4 - b * b / 2 * math.log(b) - 0.25 + d < 0:
+        lo = b
+    else:
+        hi = b
+reaction = math.pi * b * b
+w_free = lambda r: -d if r <= b else r * r / 4 - b * b / 2 * math.log(r) - 0.25
+xs = (0.25, 0.7, 0.85)
+cycles = membrane("disk_obstacle", DISK, level=-d, cycles=5,
+                  probes="; ".join("%g, 0" % x for x in xs))
+errors = []
+for c in cycles:
+    errors.append(abs(c["contact_force"] - reaction) / reaction)
+check(errors[-1] < 2e-3 and errors[-1] < errors[0] / 4,
+      "disk on a plane: reaction %.6f vs pi b^2 = %.6f (b = %.6f), relative errors %s"
+      % (cycles[-1]["contact_force"], reaction, b, ", ".join("%.1e" % x for x in errors)))
+for x, w in zip(xs, cycles[-1]["probes"]):
+    check(abs(w - w_free(x)) < 2e-4, "disk on a plane: w(%g) = %.6f vs %.6f" % (x, w, w_free(x)))
+
+# 3. the annulus, clamped outside, free inside
+A, B = -1.0 / 8, -0.25
+cycles = membrane("annulus",
+                  "set Shape = annulus\n  set Center = 0, 0\n  set Radius = 1\n"
+                  "  set Inner radius = 0.5\n  set Boundary conditions = 0: clamped; 1: free",
+                  exact="(x^2 + y^2)/4 - log(x^2 + y^2)/16 - 1/4", probes="0.5, 0; 0, 0.75")
+for norm, expected in (("L2", 2.0), ("H1", 1.0)):
+    e, r = rates(cycles, norm)
+    check(r[-1] >= expected - 0.1,
+          "annulus: %s error %s falls at the rate %.2f >= %.1f"
+          % (norm, ", ".join("%.2e" % x for x in e), r[-1], expected - 0.1))
+for (x, y), w in zip(((0.5, 0), (0, 0.75)), cycles[-1]["probes"]):
+    r = math.hypot(x, y)
+    exact = r * r / 4 + A * math.log(r) + B
+    check(abs(w - exact) < 2e-4, "annulus: w(%g, %g) = %.6f vs %.6f" % (x, y, w, exact))
+
+
+# 4. built-in straight-edged shapes against the same cells from a Gmsh file
+def write_msh(path, lx, ly, nx, ny, removed):
+    """Gmsh 2.2 (or UCD for a .ucd path): the cells of the nx x ny grid of [0,lx] x [0,ly] whose
+    centre is not in removed(x, y), and the boundary edges with the
+    built-in shapes' ids (physical tags) 0..3 on x = 0, lx, y = 0, ly and
+    4 elsewhere."""
+    node = lambda i, j: j * (nx + 1) + i + 1
+    cells = [(i, j) for j in range(ny) for i in range(nx)
+             if not removed((i + 0.5) * lx / nx, (j + 0.5) * ly / ny)]
+    edges = {}
+    for i, j in cells:
+        for a, b in ((node(i, j), node(i + 1, j)), (node(i + 1, j), node(i + 1, j + 1)),
+                     (node(i + 1, j + 1), node(i, j + 1)), (node(i, j + 1), node(i, j))):
+            key = (min(a, b), max(a, b))
+            edges[key] = None if key in edges else (a, b)
+    xy = lambda n: (((n - 1) % (nx + 1)) * lx / nx, ((n - 1) // (nx + 1)) * ly / ny)
+    lines = []
+    for e in edges.values():
+        if e is None:
+            continue
+        (x0, y0), (x1, y1) = xy(e[0]), xy(e[1])
+        tag = (0 if x0 == x1 == 0 else 1 if x0 == x1 == lx else
+               2 if y0 == y1 == 0 else 3 if y0 == y1 == ly else 4)
+        lines.append((tag, e))
+    if path.endswith(".ucd"):
+        with open(path, "w") as f:
+            f.write("# UCD\n%d %d 0 0 0\n" % ((nx + 1) * (ny + 1), len(lines) + len(cells)))
+            for j in range(ny + 1):
+                for i in range(nx + 1):
+                    f.write("%d %r %r 0\n" % (node(i, j), i * lx / nx, j * ly / ny))
+            k = 1
+            for i, j in cells:
+                f.write("%d 0 quad %d %d %d %d\n" % (k, node(i, j), node(i + 1, j),
+                                                      node(i + 1, j + 1), node(i, j + 1)))
+                k += 1
+            for tag, (a, b) in lines:
+                f.write("%d %d line %d %d\n" % (k, tag, a, b))
+                k += 1
+        return
+    with open(path, "w") as f:
+        f.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n%d\n" % ((nx + 1) * (ny + 1)))
+        for j in range(ny + 1):
+            for i in range(nx + 1):
+                f.write("%d %r %r 0\n" % (node(i, j), i * lx / nx, j * ly / ny))
+        f.write("$EndNodes\n$Elements\n%d\n" % (len(lines) + len(cells)))
+        k = 1
+        for tag, (a, b) in lines:
+            f.write("%d 1 2 %d %d %d %d\n" % (k, tag, tag + 1, a, b))
+            k += 1
+        for i, j in cells:
+            f.write("%d 3 2 7 7 %d %d %d %d\n" % (k, node(i, j), node(i + 1, j),
+                                                node(i + 1, j + 1), node(i, j + 1)))
+            k += 1
+        f.write("$EndElements\n")
+
+
+BC = "set Boundary conditions = 0: clamped; 1: simply supported; 2: clamped; 3: free; 4: clamped"
+SHAPES = {
+    "L-shape": ("set Shape = L-shape", lambda x, y: x > 1 and y > 0.5, -0.05),
+    "rectangle with hole": ("set Shape = rectangle with hole\n  set Hole size = 1, 0.5",
+                            lambda x, y: abs(x - 1) < 0.5 and abs(y - 0.5) < 0.25, -0.01),
+}
+for (shape, (entry, removed, level)), ext in zip(SHAPES.items(), ("msh", "ucd")):
+    tag = shape.replace(" ", "_")
+    mesh = os.path.join(args.workdir, tag + "." + ext)
+    write_msh(mesh, 2.0, 1.0, 8, 4, removed)
+    geometry = "set Length x = 2\n  set Length y = 1\n  set Subdivisions = 8, 4\n  " + BC
+    probes = "0.3, 0.5; 0.5, 0.25; 1.7, 0.2"
+    built = membrane(tag, geometry + "\n  " + entry, level=level, cycles=3, probes=probes)
+    read = membrane(tag + "_file", geometry + "\n  set Shape = mesh file\n  set Mesh file = " + mesh,
+                    level=level, cycles=3, probes=probes)
+    shape += " (%s file)" % ext
+    for a, b in zip(built, read):
+        check(a["n_dofs"] == b["n_dofs"] and a["nonlinear_iterations"] == b["nonlinear_iterations"],
+              "%s cycle %d: %d DoFs and %d iterations, from the file %d and %d"
+              % (shape, a["cycle"], a["n_dofs"], a["nonlinear_iterations"], b["n_dofs"],
+                 b["nonlinear_iterations"]))
+        diff = max([abs(a["contact_force"] - b["contact_force"])] +
+                   [abs(p - q) for p, q in zip(a["probes"], b["probes"])])
+        check(diff < 1e-12 and a["contact_force"] > 0,
+              "%s cycle %d: reaction %.12f and probes agree with the mesh file to %.1e"
+              % (shape, a["cycle"], a["contact_force"], diff))
+
+finish()
