@@ -23,8 +23,8 @@ writes into --out:
                                   minus the Kirchhoff GSV plate's
   convergence.png                 the reaction of every cycle against
                                   its DoFs
-  pressure.png                    the mean contact pressure of the cells
-                                  along y = 5 (from contact_points-NN.csv)
+  pressure.png                    the contact pressure along y = 5 (the
+                                  pressure column of profile.csv)
   status.png                      the contact status of every contact
                                   point of the last cycle
   surface.png                     the Mindlin plate's deflection as a
@@ -185,11 +185,7 @@ def plot(rows, out):
     n = len(rows)
     fig, axes = plt.subplots(1, n, figsize=(4 * n, 3.8), squeeze=False)
     for ax, r in zip(axes[0], rows):
-        data = list(csv.DictReader(open(os.path.join(r["outdir"], "field.csv"))))
-        m = int(round(len(data) ** 0.5))
-        X = [[float(data[j * m + i]["x"]) for i in range(m)] for j in range(m)]
-        Y = [[float(data[j * m + i]["y"]) for i in range(m)] for j in range(m)]
-        W = [[float(data[j * m + i]["deflection"]) for i in range(m)] for j in range(m)]
+        X, Y, W = read_field(r["outdir"])
         cs = ax.contourf(X, Y, W, levels=20, cmap="viridis")
         # plate on the obstacle: mid-plane within 1e-3 of its lowest level
         lowest = OBSTACLE + 0.005
@@ -207,6 +203,14 @@ def plot(rows, out):
     plot_surface(rows, out, plt)
 
 
+def read_field(outdir):
+    """The square grid of field.csv as lists of rows X, Y, W."""
+    data = list(csv.DictReader(open(os.path.join(outdir, "field.csv"))))
+    m = int(round(len(data) ** 0.5))
+    return tuple([[float(data[j * m + i][key]) for i in range(m)] for j in range(m)]
+                 for key in ("x", "y", "deflection"))
+
+
 def plot_surface(rows, out, plt):
     """surface.png: the Mindlin plate's deflection from field.csv as a
     surface warped by the deflection, the view that ParaView's 'Warp By
@@ -214,11 +218,7 @@ def plot_surface(rows, out, plt):
     r = [r for r in rows if r["key"] == "mindlin"]
     if not r:
         return
-    data = list(csv.DictReader(open(os.path.join(r[0]["outdir"], "field.csv"))))
-    m = int(round(len(data) ** 0.5))
-    X = [[float(data[j * m + i]["x"]) for i in range(m)] for j in range(m)]
-    Y = [[float(data[j * m + i]["y"]) for i in range(m)] for j in range(m)]
-    W = [[float(data[j * m + i]["deflection"]) for i in range(m)] for j in range(m)]
+    X, Y, W = read_field(r[0]["outdir"])
     fig = plt.figure(figsize=(6, 4.5))
     ax = fig.add_subplot(projection="3d")
     import numpy as np
@@ -268,30 +268,17 @@ def plot_status(rows, out, plt):
 
 
 def plot_pressure(rows, out, plt):
-    """pressure.png: the mean contact pressure of each cell of the row of
-    cells at y = 5, i.e. the sum of pressure x weight over the cell's
-    contact points divided by their weights (the cell's contact face), from
-    the last cycle's contact_points-NN.csv."""
+    """pressure.png: the contact pressure along the centre line from
+    profile.csv, the mean over the contact points of the cell (3D: of the
+    contact face) that holds each point."""
     fig, ax = plt.subplots(figsize=(7, 4))
     for r in rows:
-        points = last_contact_points(r)
-        if not points:
-            continue
-        cells = {}
-        for d in points:
-            key = (float(d["cell_x"]), float(d["cell_y"]))
-            w = float(d["weight"])
-            c = cells.setdefault(key, [0., 0.])
-            c[0] += float(d["pressure"]) * w
-            c[1] += w
-        y_row = min({k[1] for k in cells}, key=lambda y: abs(y - 5.))
-        row = sorted((k[0], v[0] / v[1]) for k, v in cells.items()
-                     if abs(k[1] - y_row) < 1e-9 and v[1] > 0.)
-        ax.step([x for x, _ in row], [p for _, p in row], where="mid",
-                label=r["model"])
+        data = list(csv.DictReader(open(os.path.join(r["outdir"], "profile.csv"))))
+        ax.plot([float(d["x"]) for d in data], [float(d["pressure"]) for d in data],
+                label=r["model"], lw=1)
     ax.axhline(0.02, color="k", lw=0.8, ls="--", label="the load |q| = 0.02")
-    ax.set_xlabel("x (the row of cells at y = 5)")
-    ax.set_ylabel("mean contact pressure of a cell")
+    ax.set_xlabel("x on the centre line y = 5")
+    ax.set_ylabel("contact pressure (cell mean)")
     ax.set_title("Paper test: contact pressure")
     ax.legend(fontsize=7, loc="upper right")
     fig.tight_layout()

@@ -117,6 +117,13 @@ namespace NitscheContact
     virtual std::vector<double>
     deflection_at(const std::vector<dealii::Point<2>> &points) const = 0;
 
+    /// Contact pressure -Lambda_n at in-plane points: its mean over the
+    /// contact points of the cell (3D: of the contact face) that holds each
+    /// point; NaN where a point lies outside the plate. Called on all
+    /// ranks, result on all.
+    virtual std::vector<double>
+    contact_pressure_at(const std::vector<dealii::Point<2>> &points) const = 0;
+
     /// Write graphical output of this cycle. Returns (series, file) pairs:
     /// for each series (e.g. "solution", "contact") the master record
     /// (.pvtu) relative to the output directory; the driver keeps one .pvd

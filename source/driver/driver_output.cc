@@ -114,6 +114,7 @@ namespace NitscheContact
                                              prm.profile_start);
       }
     const std::vector<double> w = model.deflection_at(points);
+    const std::vector<double> pressure = model.contact_pressure_at(points);
     // the 2D field (collective: before the rank check below)
     if (cycle + 1 == prm.n_cycles && prm.field_points > 0)
       {
@@ -140,14 +141,14 @@ namespace NitscheContact
     const double  length = prm.profile_start.distance(prm.profile_end);
     std::ofstream f(prm.output_directory + "/profile-" +
                     Utilities::int_to_string(cycle, 2) + ".csv");
-    f << "s,x,y,deflection\n" << std::setprecision(10);
+    f << "s,x,y,deflection,pressure\n" << std::setprecision(10);
     // points of the line off the plate (a hole, a re-entrant corner, the
     // corners of a disk's bounding box) are left out
     unsigned int off_plate = 0;
     for (unsigned int i = 0; i < points.size(); ++i)
       if (std::isfinite(w[i]))
         f << length * i / (points.size() - 1) << ',' << points[i][0] << ','
-          << points[i][1] << ',' << w[i] << '\n';
+          << points[i][1] << ',' << w[i] << ',' << pressure[i] << '\n';
       else
         ++off_plate;
     f.close();

@@ -149,6 +149,11 @@ namespace
     {
       return std::vector<double>(p.size(), 0.);
     }
+    std::vector<double>
+    contact_pressure_at(const std::vector<Point<2>> &p) const override
+    {
+      return std::vector<double>(p.size(), 0.);
+    }
     std::vector<std::pair<std::string, std::string>>
     write_graphical_output(const std::string &, unsigned int) const override
     {

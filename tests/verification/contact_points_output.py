@@ -14,7 +14,9 @@ with slip rows present), sum of weight x pressure
 is the contact force (relative 1e-9; 12 digits in the file), pressure >= 0 and positive only at
 active points, s_n > 0 exactly at the inactive ones, the weights sum to
 the plate area 100, and every point lies in its cell (within half the cell
-size of the cell centre). 3D: the files of 1 and 2 ranks hold the same
+size of the cell centre); the pressure column of profile-NN.csv is at
+each point the mean of the rows of the cell (3D: bottom face) holding it.
+3D: the files of 1 and 2 ranks hold the same
 points (sorted by position and cell) with the same status and pressures
 (within 1e-4 of the largest pressure: the Newton tolerance 1e-6 bounds
 the energy norm of the error, measured pointwise differences 1.2e-5).
@@ -164,6 +166,28 @@ for tag, prm, changes, ranks in cases:
             half = 0.5 * record["h"] * (1 + 1e-9)
             check(all(abs(p["x"] - p["cell_x"]) <= half and abs(p["y"] - p["cell_y"]) <= half
                       for p in pts), what + ": every point within its cell (h = %g)" % record["h"])
+            # profile.csv's pressure column: at each point of the profile
+            # line the mean pressure of the cell (3D: bottom face) that holds
+            # it, the same as the weighted mean of that cell's rows here (a
+            # point on a cell edge may take either cell's mean, or their mean)
+            cells = {}
+            for p in pts:
+                sums = cells.setdefault((p["cell_x"], p["cell_y"]), [0., 0.])
+                sums[0] += p["weight"] * p["pressure"]
+                sums[1] += p["weight"]
+            xs = sorted({k[0] for k in cells})
+            half = 0.5 * min(b - a for a, b in zip(xs, xs[1:])) * (1 + 1e-9)
+            with open(os.path.join(directory, "profile-%02d.csv" % c)) as f:
+                profile = list(csv.DictReader(f))
+            worst = 0.
+            for row in profile:
+                x, y, value = float(row["x"]), float(row["y"]), float(row["pressure"])
+                means = [a / b for (cx, cy), (a, b) in cells.items()
+                         if abs(x - cx) <= half and abs(y - cy) <= half]
+                worst = max(worst, max(0., min(means) - value, value - max(means)))
+            check(len(profile) > 100 and worst <= 1e-8 * max(pmax, 1e-300),
+                  "%s: profile.csv pressure = its cell's mean pressure of the rows "
+                  "(%d points, largest deviation %.1e)" % (what, len(profile), worst))
 
 for c in (0, 1):
     key = lambda p: (round(p["x"], 9), round(p["y"], 9), round(p["cell_x"], 9),

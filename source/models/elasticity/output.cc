@@ -222,28 +222,7 @@ namespace NitscheContact
       // discrete problem imposes contact; their sum is contact_force):
       // pressure p = -Lambda_n, |Lambda_t|, and the fraction of the face
       // area with p > 0. Stored per cell, the cell of each contact face.
-      std::array<Vector<double>, 3> face_means;
-      for (auto &v : face_means)
-        v.reinit(triangulation.n_active_cells());
-      // (sums of weight x value, divided by the face's weight below)
-      Vector<double> area(triangulation.n_active_cells());
-      for_each_contact_point(
-        [&](const DoFHandler<3>::active_cell_iterator &cell,
-            const unsigned int,
-            const Point<3> &,
-            const PointInput &,
-            const PointState &st,
-            const double      JxW) {
-          const unsigned int k = cell->active_cell_index();
-          face_means[0][k] += -st.lambda_n * JxW;
-          face_means[1][k] += st.lambda_t.norm() * JxW;
-          face_means[2][k] += (st.lambda_n < 0. ? JxW : 0.);
-          area[k] += JxW;
-        });
-      for (unsigned int k = 0; k < area.size(); ++k)
-        if (area[k] > 0.)
-          for (auto &v : face_means)
-            v[k] /= area[k];
+      const std::array<Vector<double>, 3> face_means = contact_face_means();
       ContactPostprocessor contact_post(prm, obstacle, kappa, face_means);
       ContactFaces         faces;
       faces.attach_dof_handler(dof_handler);

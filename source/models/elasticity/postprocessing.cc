@@ -172,6 +172,77 @@ namespace NitscheContact
   }
 
 
+  std::array<Vector<double>, 3>
+  ElasticityModel::contact_face_means() const
+  {
+    std::array<Vector<double>, 3> means;
+    for (auto &v : means)
+      v.reinit(triangulation.n_active_cells());
+    // (sums of weight x value, divided by the face's weight below)
+    Vector<double> area(triangulation.n_active_cells());
+    for_each_contact_point([&](const DoFHandler<3>::active_cell_iterator &cell,
+                               const unsigned int,
+                               const Point<3> &,
+                               const PointInput &,
+                               const PointState &st,
+                               const double      JxW) {
+      const unsigned int k = cell->active_cell_index();
+      means[0][k] += -st.lambda_n * JxW;
+      means[1][k] += st.lambda_t.norm() * JxW;
+      means[2][k] += (st.lambda_n < 0. ? JxW : 0.);
+      area[k] += JxW;
+    });
+    for (unsigned int k = 0; k < area.size(); ++k)
+      if (area[k] > 0.)
+        for (auto &v : means)
+          v[k] /= area[k];
+    return means;
+  }
+
+
+
+  std::vector<double>
+  ElasticityModel::contact_pressure_at(const std::vector<Point<2>> &points) const
+  {
+    // the pressure of the contact face under each point: the locally owned
+    // cell that holds the point on the lower face (x3 = -t/2) has it
+    const Vector<double>      pressure = contact_face_means()[0];
+    std::vector<double>       value(points.size(), 0.), owner(points.size(), 0.);
+    const GridTools::Cache<3> cache(triangulation, mapping);
+    Triangulation<3>::active_cell_iterator hint;
+    for (unsigned int p = 0; p < points.size(); ++p)
+      {
+        const Point<3> x(points[p][0], points[p][1], -0.5 * prm.thickness);
+        try
+          {
+            const auto found =
+              GridTools::find_active_cell_around_point(cache, x, hint);
+            if (found.first.state() != IteratorState::valid)
+              continue;
+            hint = found.first;
+            for (const auto &c : GridTools::find_all_active_cells_around_point(
+                   mapping, triangulation, x, 1e-10, found))
+              if (c.first->is_locally_owned())
+                {
+                  value[p] += pressure[c.first->active_cell_index()];
+                  owner[p] += 1.;
+                }
+          }
+        catch (...)
+          {
+            // the point is not in the locally known part of the mesh
+          }
+      }
+    Utilities::MPI::sum(value, comm, value);
+    Utilities::MPI::sum(owner, comm, owner);
+    for (unsigned int p = 0; p < points.size(); ++p)
+      value[p] = owner[p] > 0 ? value[p] / owner[p] :
+                                std::numeric_limits<double>::quiet_NaN();
+    return value;
+  }
+
+
+
   std::vector<ContactPointRecord>
   ElasticityModel::contact_points() const
   {

@@ -18,22 +18,13 @@ namespace NitscheContact
     // Cell data: mean contact pressure p_h and the fraction of contact
     // quadrature points in contact (p_h is a quadrature-point quantity
     // that involves fourth derivatives, which DataOut cannot evaluate).
-    const unsigned int nq = quadrature.size();
-    Vector<float>      pressure(triangulation.n_active_cells()),
+    Vector<float> pressure(triangulation.n_active_cells()),
       status(triangulation.n_active_cells()),
       gap(triangulation.n_active_cells());
-    double u[16];
     for (unsigned int c = 0; c < cells.size(); ++c)
       {
-        cell_coefficients(solution, c, u);
-        CellContactMeans means;
-        for (unsigned int q = 0; q < nq; ++q)
-          {
-            const PointInput in = point_input(c, q, u);
-            means.add(in, evaluate_contact_point(in, NonlinearScheme::newton),
-                      kit.JxW[q]);
-          }
-        const unsigned int k = cells[c]->active_cell_index();
+        const CellContactMeans means = cell_contact_means(c);
+        const unsigned int     k     = cells[c]->active_cell_index();
         pressure[k]          = means.pressure();
         status[k]            = means.contact_fraction();
         gap[k]               = means.gap();

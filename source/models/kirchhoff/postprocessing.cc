@@ -66,6 +66,40 @@ namespace NitscheContact
 
 
 
+  CellContactMeans
+  KirchhoffModel::cell_contact_means(const unsigned int c) const
+  {
+    double u[16];
+    cell_coefficients(solution, c, u);
+    CellContactMeans means;
+    for (unsigned int q = 0; q < quadrature.size(); ++q)
+      {
+        const PointInput in = point_input(c, q, u);
+        means.add(in, evaluate_contact_point(in, NonlinearScheme::newton),
+                  kit.JxW[q]);
+      }
+    return means;
+  }
+
+
+
+  std::vector<double>
+  KirchhoffModel::contact_pressure_at(const std::vector<Point<2>> &points) const
+  {
+    std::vector<double> p(points.size(),
+                          std::numeric_limits<double>::quiet_NaN());
+    for (unsigned int k = 0; k < points.size(); ++k)
+      {
+        unsigned int c;
+        Point<2>     unit;
+        if (locate(points[k], c, unit))
+          p[k] = cell_contact_means(c).pressure();
+      }
+    return p;
+  }
+
+
+
   std::vector<ContactPointRecord>
   KirchhoffModel::contact_points() const
   {

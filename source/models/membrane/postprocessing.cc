@@ -87,6 +87,53 @@ namespace NitscheContact
 
 
 
+  CellContactMeans
+  MembraneModel::cell_contact_means(
+    const DoFHandler<2>::active_cell_iterator &cell,
+    FEValues<2>                               &contact) const
+  {
+    Vector<double>          u(fe->n_dofs_per_cell());
+    std::vector<PointInput> inputs;
+    contact.reinit(cell);
+    cell->get_dof_values(solution, u);
+    cell_point_inputs(contact, cell->active_cell_index(), u, inputs);
+    CellContactMeans means;
+    for (unsigned int q = 0; q < contact_quadrature.size(); ++q)
+      means.add(inputs[q],
+                evaluate_contact_point(inputs[q], NonlinearScheme::newton),
+                contact.JxW(q));
+    return means;
+  }
+
+
+
+  std::vector<double>
+  MembraneModel::contact_pressure_at(const std::vector<Point<2>> &points) const
+  {
+    std::vector<double> p(points.size(),
+                          std::numeric_limits<double>::quiet_NaN());
+    FEValues<2> contact(mapping, *fe, contact_quadrature,
+                        update_values | update_hessians | update_JxW_values);
+    const GridTools::Cache<2>              cache(triangulation, mapping);
+    Triangulation<2>::active_cell_iterator hint;
+    for (unsigned int k = 0; k < points.size(); ++k)
+      {
+        const auto found =
+          GridTools::find_active_cell_around_point(cache, points[k], hint);
+        if (found.first == triangulation.end())
+          continue;
+        hint = found.first;
+        p[k] = cell_contact_means(DoFHandler<2>::active_cell_iterator(
+                                    &triangulation, hint->level(),
+                                    hint->index(), &dof_handler),
+                                  contact)
+                 .pressure();
+      }
+    return p;
+  }
+
+
+
   std::vector<ContactPointRecord>
   MembraneModel::contact_points() const
   {
@@ -194,20 +241,11 @@ namespace NitscheContact
       gap(triangulation.n_active_cells());
     FEValues<2> contact(mapping, *fe, contact_quadrature,
                         update_values | update_hessians | update_JxW_values);
-    Vector<double>          u(fe->n_dofs_per_cell());
-    std::vector<PointInput> inputs;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
-        const unsigned int c = cell->active_cell_index();
-        contact.reinit(cell);
-        cell->get_dof_values(solution, u);
-        cell_point_inputs(contact, c, u, inputs);
-        CellContactMeans means;
-        for (unsigned int q = 0; q < contact_quadrature.size(); ++q)
-          means.add(inputs[q],
-                    evaluate_contact_point(inputs[q], NonlinearScheme::newton),
-                    contact.JxW(q));
-        pressure[c] = means.pressure();
+        const unsigned int     c     = cell->active_cell_index();
+        const CellContactMeans means = cell_contact_means(cell, contact);
+        pressure[c]                  = means.pressure();
         fraction[c] = means.contact_fraction();
         gap[c]      = means.gap();
       }

@@ -238,6 +238,43 @@ namespace NitscheContact
 
 
 
+  CellContactMeans
+  MindlinModel::cell_contact_means(const unsigned int c) const
+  {
+    const unsigned int                   n  = fe.n_dofs_per_cell();
+    const unsigned int                   nq = contact_quadrature.size();
+    std::vector<types::global_dof_index> dofs(n);
+    Vector<double>                       u(n);
+    cell_grid[c]->get_dof_indices(dofs);
+    for (unsigned int i = 0; i < n; ++i)
+      u(i) = solution(dofs[i]);
+    CellContactMeans means;
+    for (unsigned int q = 0; q < nq; ++q)
+      {
+        const PointInput in =
+          point_input(u, q, gaps[static_cast<std::size_t>(c) * nq + q]);
+        means.add(in, evaluate_contact_point(in, NonlinearScheme::newton),
+                  contact_JxW[q]);
+      }
+    return means;
+  }
+
+
+
+  std::vector<double>
+  MindlinModel::contact_pressure_at(const std::vector<Point<2>> &points) const
+  {
+    std::vector<double> p(points.size(),
+                          std::numeric_limits<double>::quiet_NaN());
+    const UniformPlateGrid grid(nx, ny, prm.length_x, prm.length_y);
+    for (unsigned int k = 0; k < points.size(); ++k)
+      if (const auto where = grid.locate(points[k]))
+        p[k] = cell_contact_means(where->cell).pressure();
+    return p;
+  }
+
+
+
   DoFHandler<2>::active_cell_iterator
   MindlinModel::locate(const Point<2> &p, Point<2> &unit_point) const
   {

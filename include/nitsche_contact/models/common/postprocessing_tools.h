@@ -59,8 +59,8 @@ namespace NitscheContact
   };
 
   /// The means over the contact points of one cell that the plate models
-  /// write as cell data: the contact pressure, the fraction of the cell in
-  /// contact, and the gap over the points with an obstacle below (NaN in a
+  /// write as cell data: the contact pressure, the fractions of the cell in
+  /// contact and slipping, and the gap over the points with an obstacle below (NaN in a
   /// cell without any, as where a sphere does not reach).
   class CellContactMeans
   {
@@ -70,6 +70,7 @@ namespace NitscheContact
     {
       pressure_integral += -st.lambda_n * JxW;
       contact_measure += (st.lambda_n < 0. ? JxW : 0.);
+      slip_measure += (st.status == PointStatus::slip ? JxW : 0.);
       if (ObstacleSurface::has_obstacle(in.gap))
         {
           gap_integral += (in.gap - in.u_n) * JxW;
@@ -88,6 +89,11 @@ namespace NitscheContact
       return contact_measure / measure;
     }
     double
+    slip_fraction() const
+    {
+      return slip_measure / measure;
+    }
+    double
     gap() const
     {
       return gap_measure > 0. ? gap_integral / gap_measure :
@@ -95,8 +101,8 @@ namespace NitscheContact
     }
 
   private:
-    double pressure_integral = 0., contact_measure = 0., gap_integral = 0.,
-           gap_measure = 0., measure = 0.;
+    double pressure_integral = 0., contact_measure = 0., slip_measure = 0.,
+           gap_integral = 0., gap_measure = 0., measure = 0.;
   };
 
   /// Contact area and force (the integrals of the set where the pressure

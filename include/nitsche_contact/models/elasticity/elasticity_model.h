@@ -145,6 +145,9 @@ namespace NitscheContact
     contact_points() const override;
     std::vector<double>
     deflection_at(const std::vector<dealii::Point<2>> &points) const override;
+    std::vector<double>
+    contact_pressure_at(
+      const std::vector<dealii::Point<2>> &points) const override;
     std::vector<std::pair<std::string, std::string>>
     write_graphical_output(const std::string &directory,
                            unsigned int       cycle) const override;
@@ -387,6 +390,11 @@ namespace NitscheContact
     template <typename PointWork>
     void
     for_each_contact_point(PointWork &&work) const;
+    /// Per cell (zero but on the locally owned cells with a contact
+    /// face), the means over the contact face's points of the pressure
+    /// -Lambda_n, of |Lambda_t| and of the fraction in contact.
+    std::array<dealii::Vector<double>, 3>
+    contact_face_means() const;
     /// The Nitsche parameter r = gamma0 E / h_n of a contact face.
     double
     nitsche_r(const dealii::DoFHandler<3>::active_cell_iterator &cell,

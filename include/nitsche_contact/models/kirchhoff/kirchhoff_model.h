@@ -38,6 +38,7 @@
 #include <nitsche_contact/models/common/model_tools.h>
 #include <nitsche_contact/fe/fe_bicubic_hermite.h>
 #include <nitsche_contact/model.h>
+#include <nitsche_contact/models/common/postprocessing_tools.h>
 #include <nitsche_contact/solvers/hermite_multigrid.h>
 #include <nitsche_contact/parameters.h>
 #include <nitsche_contact/solvers/reused_factorization.h>
@@ -165,6 +166,9 @@ namespace NitscheContact
     contact_points() const override;
     std::vector<double>
     deflection_at(const std::vector<dealii::Point<2>> &points) const override;
+    std::vector<double>
+    contact_pressure_at(
+      const std::vector<dealii::Point<2>> &points) const override;
     std::vector<std::pair<std::string, std::string>>
     write_graphical_output(const std::string &directory,
                            unsigned int       cycle) const override;
@@ -367,6 +371,10 @@ namespace NitscheContact
     setup_constant_matrix();
 
     // ----- postprocessing (postprocessing.cc)
+
+    /// The means over the contact points of cell c (of `cells`).
+    CellContactMeans
+    cell_contact_means(unsigned int c) const;
 
     /// Locate the cell containing p and the unit point; false if outside.
     bool

@@ -36,6 +36,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <nitsche_contact/model.h>
+#include <nitsche_contact/models/common/postprocessing_tools.h>
 #include <nitsche_contact/parameters.h>
 #include <nitsche_contact/solvers/reused_factorization.h>
 
@@ -89,6 +90,9 @@ namespace NitscheContact
     contact_points() const override;
     std::vector<double>
     deflection_at(const std::vector<dealii::Point<2>> &points) const override;
+    std::vector<double>
+    contact_pressure_at(
+      const std::vector<dealii::Point<2>> &points) const override;
     std::vector<std::pair<std::string, std::string>>
     write_graphical_output(const std::string &directory,
                            unsigned int       cycle) const override;
@@ -214,6 +218,12 @@ namespace NitscheContact
     gsv_inverse_constant() const;
 
     // ----- postprocessing (postprocessing.cc)
+
+    /// The means over the contact points of `cell`; `contact` is an
+    /// FEValues of the contact quadrature with values, hessians and JxW.
+    CellContactMeans
+    cell_contact_means(const dealii::DoFHandler<2>::active_cell_iterator &cell,
+                       dealii::FEValues<2> &contact) const;
 
     /// L2 and H1 errors against 'Reference solution/Exact solution'.
     void

@@ -31,6 +31,7 @@
 
 #include <nitsche_contact/models/common/model_tools.h>
 #include <nitsche_contact/model.h>
+#include <nitsche_contact/models/common/postprocessing_tools.h>
 #include <nitsche_contact/parameters.h>
 #include <nitsche_contact/solvers/hermite_multigrid.h>
 #include <nitsche_contact/solvers/reused_factorization.h>
@@ -148,6 +149,9 @@ namespace NitscheContact
     contact_points() const override;
     std::vector<double>
     deflection_at(const std::vector<dealii::Point<2>> &points) const override;
+    std::vector<double>
+    contact_pressure_at(
+      const std::vector<dealii::Point<2>> &points) const override;
     std::vector<std::pair<std::string, std::string>>
     write_graphical_output(const std::string &directory,
                            unsigned int       cycle) const override;
@@ -359,6 +363,9 @@ namespace NitscheContact
     update_multigrid() const;
 
     // Postprocessing (postprocessing.cc).
+    /// The means over the contact points of cell c (of `cell_grid`).
+    CellContactMeans
+    cell_contact_means(unsigned int c) const;
     /// The cell containing p (Cartesian index lookup), or end().
     dealii::DoFHandler<2>::active_cell_iterator
     locate(const dealii::Point<2> &p, dealii::Point<2> &unit_point) const;
