@@ -483,7 +483,7 @@ namespace NitscheContact
 
 
   std::string
-  PlateGeometry::shape_name() const
+  PlateGeometry::name_of(const PlateShape shape)
   {
     switch (shape)
       {
@@ -500,6 +500,14 @@ namespace NitscheContact
         default:
           return "rectangle";
       }
+  }
+
+
+
+  std::string
+  PlateGeometry::shape_name() const
+  {
+    return name_of(shape);
   }
 
 
@@ -621,15 +629,19 @@ namespace NitscheContact
 
 
   void
-  require_rectangle(const PlateGeometry &geometry,
-                    const std::string   &model,
-                    const std::string   &alternative)
+  require_shape(const PlateGeometry           &geometry,
+                const std::vector<PlateShape> &shapes,
+                const std::string             &what,
+                const std::string             &alternative)
   {
-    if (!geometry.is_rectangle())
-      bad_value("Geometry/Shape",
-                geometry.shape_name(),
-                "the model '" + model +
-                  "' solves the rectangle only (Shape = rectangle); " +
-                  alternative);
+    if (std::find(shapes.begin(), shapes.end(), geometry.shape) != shapes.end())
+      return;
+    std::string names;
+    for (unsigned int k = 0; k < shapes.size(); ++k)
+      names += (k == 0 ? "'" : k + 1 == shapes.size() ? " and '" : ", '") +
+               PlateGeometry::name_of(shapes[k]) + "'";
+    bad_value("Geometry/Shape",
+              geometry.shape_name(),
+              what + " solves " + names + " only; " + alternative);
   }
 } // namespace NitscheContact

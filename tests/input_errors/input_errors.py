@@ -355,10 +355,10 @@ CASES = [
      ["Geometry/Boundary conditions", "boundary id 2", "has no condition"]),
     ("a plate model on a disk",
      "set Model = kirchhoff\nsubsection Geometry\n  set Shape = disk\nend",
-     ["Geometry/Shape", "'disk'", "rectangle only", "membrane"]),
+     ["Geometry/Shape", "'disk'", "'L-shape' and 'rectangle with hole' only", "membrane"]),
     ("the 3D model on an L-shape",
      "subsection Geometry\n  set Shape = L-shape\n  set Subdivisions = 2, 2, 1\nend",
-     ["Geometry/Shape", "'L-shape'", "rectangle only"]),
+     ["Geometry/Shape", "'L-shape'", "'rectangle' only"]),
     ("annulus inner radius above the radius",
      "set Model = membrane\nsubsection Geometry\n  set Shape = annulus\n"
      "  set Radius = 2\n  set Inner radius = 3\nend",

@@ -113,6 +113,9 @@ namespace NitscheContact
     /// The entry's value ('rectangle', 'disk', ...), for messages.
     std::string
     shape_name() const;
+    /// The value of 'Geometry/Shape' for a shape.
+    static std::string
+    name_of(PlateShape shape);
     /// The plate in words, for messages: "[0, 10] x [0, 10]", "(the disk
     /// of radius 5 around (5, 5))", ...
     std::string
@@ -154,13 +157,20 @@ namespace NitscheContact
     read_mesh_file(dealii::Triangulation<2> &triangulation) const;
   };
 
-  /// InputError unless the geometry is the rectangle: `model` (as the
-  /// user names it in 'Model') solves only that shape; `alternative` says
-  /// which model solves the others.
+  /// InputError unless the geometry's shape is one of `shapes`: `what`
+  /// (e.g. "the model 'mindlin'") solves only those; `alternative` says
+  /// what solves the others.
   void
-  require_rectangle(const PlateGeometry &geometry,
-                    const std::string   &model,
-                    const std::string   &alternative);
+  require_shape(const PlateGeometry           &geometry,
+                const std::vector<PlateShape> &shapes,
+                const std::string             &what,
+                const std::string             &alternative);
+
+  /// The shapes made of the cells of the rectangle's uniform grid.
+  inline const std::vector<PlateShape> cartesian_shapes = {
+    PlateShape::rectangle,
+    PlateShape::l_shape,
+    PlateShape::rectangle_with_hole};
 } // namespace NitscheContact
 
 #endif

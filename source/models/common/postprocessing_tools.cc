@@ -6,14 +6,16 @@
 
 namespace NitscheContact
 {
-  UniformPlateGrid::UniformPlateGrid(const unsigned int nx,
-                                     const unsigned int ny,
-                                     const double       length_x,
-                                     const double       length_y)
+  UniformPlateGrid::UniformPlateGrid(const unsigned int               nx,
+                                     const unsigned int               ny,
+                                     const double                     length_x,
+                                     const double                     length_y,
+                                     const std::vector<unsigned int> *cell_at)
     : nx(nx)
     , ny(ny)
     , length_x(length_x)
     , length_y(length_y)
+    , cell_at(cell_at)
   {}
 
   std::optional<UniformPlateGrid::Location>
@@ -28,11 +30,22 @@ namespace NitscheContact
       std::min(nx - 1, static_cast<unsigned int>(std::max(0., p[0] / hx)));
     const unsigned int j =
       std::min(ny - 1, static_cast<unsigned int>(std::max(0., p[1] / hy)));
-    Location where;
-    where.cell = i + nx * j;
-    where.unit = dealii::Point<2>(std::clamp((p[0] - i * hx) / hx, 0., 1.),
-                                  std::clamp((p[1] - j * hy) / hy, 0., 1.));
-    return where;
+    const dealii::Point<2> unit(std::clamp((p[0] - i * hx) / hx, 0., 1.),
+                                std::clamp((p[1] - j * hy) / hy, 0., 1.));
+    if (cell_at == nullptr)
+      return Location{i + nx * j, unit};
+    // the position (i, j), or on its lower or left edge a neighbour
+    for (const unsigned int di : {0u, 1u})
+      for (const unsigned int dj : {0u, 1u})
+        {
+          if ((di == 1 && (i == 0 || unit[0] > 1e-10)) ||
+              (dj == 1 && (j == 0 || unit[1] > 1e-10)))
+            continue;
+          const unsigned int c = (*cell_at)[(i - di) + nx * (j - dj)];
+          if (c != no_cell)
+            return Location{c, dealii::Point<2>(unit[0] + di, unit[1] + dj)};
+        }
+    return std::nullopt;
   }
 
   void

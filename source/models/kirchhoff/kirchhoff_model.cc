@@ -161,7 +161,7 @@ namespace NitscheContact
   KirchhoffModel::make_constraints()
   {
     constraints.clear();
-    for (unsigned int b = 0; b < 4; ++b)
+    for (const auto b : prm.geometry.boundary_ids)
       {
         const EdgeCondition e = prm.boundary_condition(b);
         HermiteTools::make_zero_boundary_constraints(
@@ -179,11 +179,10 @@ namespace NitscheContact
   void
   KirchhoffModel::number_cells()
   {
-    // the mesh must be the uniform one
+    // the mesh must be the uniform one: the cells of the nx x ny grid of
+    // the rectangle on the plate, in lexicographic order
     const double hx = prm.length_x / nx, hy = prm.length_y / ny;
-    cells.assign(nx * ny, DoFHandler<2>::active_cell_iterator());
-    cell_dofs.resize(16 * nx * ny);
-    std::vector<types::global_dof_index> dofs(16);
+    std::vector<DoFHandler<2>::active_cell_iterator> grid(nx * ny);
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         const Tensor<1, 2> h = FE_BicubicHermite<2>::cell_extents(cell);
@@ -194,9 +193,21 @@ namespace NitscheContact
           static_cast<unsigned int>(cell->center()[0] / hx);
         const unsigned int iy =
           static_cast<unsigned int>(cell->center()[1] / hy);
-        const unsigned int c = ix + nx * iy;
-        cells[c]             = cell;
-        cell->get_dof_indices(dofs);
+        grid[ix + nx * iy] = cell;
+      }
+    cells.clear();
+    cell_at.assign(nx * ny, no_cell);
+    for (unsigned int k = 0; k < grid.size(); ++k)
+      if (grid[k].state() == IteratorState::valid)
+        {
+          cell_at[k] = cells.size();
+          cells.push_back(grid[k]);
+        }
+    cell_dofs.resize(16 * cells.size());
+    std::vector<types::global_dof_index> dofs(16);
+    for (unsigned int c = 0; c < cells.size(); ++c)
+      {
+        cells[c]->get_dof_indices(dofs);
         std::copy(dofs.begin(), dofs.end(), cell_dofs.begin() + 16 * c);
       }
   }
@@ -218,18 +229,26 @@ namespace NitscheContact
         // Nested iteration. Uniform refinement of a Q3-Hermite space gives
         // a space that contains the old one, so Hermite interpolation of
         // the old solution at the new vertices reproduces it exactly.
-        const unsigned int     old_nx = nx, old_ny = ny;
         const Tensor<1, 2>     old_h  = kit.h;
         std::vector<double>    coeff(16 * cells.size());
         for (unsigned int k = 0; k < coeff.size(); ++k)
           coeff[k] = solution[cell_dofs[k]];
+        // the coarse cells' lookup, for evaluating the old solution
+        const unsigned int        old_nx = nx, old_ny = ny;
+        std::vector<unsigned int> old_cell_at = cell_at;
+        const std::function<bool(const Point<2> &, unsigned int &, Point<2> &)>
+          old_locate = [&, old_nx, old_ny](const Point<2> &p,
+                                           unsigned int   &c,
+                                           Point<2>       &unit) {
+            return locate_in(old_nx, old_ny, old_cell_at, p, c, unit);
+          };
 
         triangulation.refine_global(1);
         nx *= 2;
         ny *= 2;
         setup_dofs();
         solution.reinit(dof_handler.n_dofs());
-        interpolate_from_coarser(old_nx, old_ny, old_h, coeff);
+        interpolate_from_coarser(old_locate, old_h, coeff);
       }
     base      = solution;
     increment.reinit(solution.size());
@@ -239,8 +258,8 @@ namespace NitscheContact
 
   void
   KirchhoffModel::interpolate_from_coarser(
-    const unsigned int         old_nx,
-    const unsigned int         old_ny,
+    const std::function<bool(const Point<2> &, unsigned int &, Point<2> &)>
+                              &old_locate,
     const Tensor<1, 2>        &old_h,
     const std::vector<double> &coeff)
   {
@@ -249,17 +268,12 @@ namespace NitscheContact
     std::vector<Tensor<2, 2>> hs;
     const std::function<HermiteTools::VertexData(const Point<2> &)>
       old_solution = [&](const Point<2> &p) {
-        const unsigned int ix = std::min<unsigned int>(
-          old_nx - 1,
-          static_cast<unsigned int>(std::max(0., p[0] / old_h[0])));
-        const unsigned int iy = std::min<unsigned int>(
-          old_ny - 1,
-          static_cast<unsigned int>(std::max(0., p[1] / old_h[1])));
-        const Point<2> unit((p[0] - ix * old_h[0]) / old_h[0],
-                            (p[1] - iy * old_h[1]) / old_h[1]);
+        unsigned int c;
+        Point<2>     unit;
+        old_locate(p, c, unit);
         fe.evaluate(unit, old_h, v, g, hs);
         HermiteTools::VertexData d = {{0., 0., 0., 0.}};
-        const double *cf = &coeff[16 * (ix + old_nx * iy)];
+        const double *cf = &coeff[16 * c];
         for (unsigned int i = 0; i < 16; ++i)
           {
             d[0] += cf[i] * v[i];

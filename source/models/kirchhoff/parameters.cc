@@ -200,7 +200,13 @@ namespace NitscheContact
     // the checks of the common input that depend on the model: a plate
     // cell refines into 4, the contact surface is the bottom face or the
     // mid-plane, and a compliant obstacle may lie above a supported edge
-    require_rectangle(prm.geometry, "kirchhoff", "the membrane model solves every shape");
+    require_shape(prm.geometry, cartesian_shapes, "the model 'kirchhoff'",
+                  "its element is C1 on a uniform grid of axis-parallel "
+                  "rectangles only; the membrane model solves every shape");
+    if (use_multigrid)
+      require_shape(prm.geometry, {PlateShape::rectangle},
+                    "'Kirchhoff/Linear solver/Type = multigrid'",
+                    "use 'Type = direct'");
     prm.check_first_mesh_size(4);
     prm.check_magnitudes(0.);
     if (prm.obstacle_is_rigid())

@@ -30,8 +30,21 @@ namespace NitscheContact
                          unsigned int   &cell_index,
                          Point<2>       &unit) const
   {
+    return locate_in(nx, ny, cell_at, p, cell_index, unit);
+  }
+
+
+
+  bool
+  KirchhoffModel::locate_in(const unsigned int               nx,
+                            const unsigned int               ny,
+                            const std::vector<unsigned int> &cell_at,
+                            const Point<2>                  &p,
+                            unsigned int                    &cell_index,
+                            Point<2>                        &unit) const
+  {
     const auto where =
-      UniformPlateGrid(nx, ny, prm.length_x, prm.length_y).locate(p);
+      UniformPlateGrid(nx, ny, prm.length_x, prm.length_y, &cell_at).locate(p);
     if (!where)
       return false;
     cell_index = where->cell;

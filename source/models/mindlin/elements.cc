@@ -233,7 +233,7 @@ namespace NitscheContact
     // 'bottom face': the face x3 = -eps must stay above z_obs, so u_n =
     // -w <= g = -eps - z_obs; 'mid-plane': w >= z_obs, g = -z_obs.
     const unsigned int nq = contact_quadrature.size();
-    gaps.resize(static_cast<std::size_t>(nx) * ny * nq);
+    gaps.resize(cell_grid.size() * nq);
     const double  shift       = prm.obstacle_level_is_midplane ? 0. : eps;
     unsigned long bad_heights = 0;
     Point<2>      bad_point;

@@ -29,7 +29,14 @@ namespace NitscheContact
     // the 3D model's predictor, whose input the 3D model checks): a plate
     // cell refines into 4, the Nitsche parameter is gamma0 E / t, and a
     // compliant obstacle may lie above a supported edge
-    require_rectangle(common.geometry, "mindlin", "the membrane model solves every shape");
+    require_shape(common.geometry, cartesian_shapes, "the model 'mindlin'",
+                  "its elements are precomputed on a uniform grid of "
+                  "axis-parallel rectangles; the membrane model solves every "
+                  "shape");
+    if (settings.multigrid)
+      require_shape(common.geometry, {PlateShape::rectangle},
+                    "'Mindlin/Linear solver/Type = multigrid'",
+                    "use 'Type = direct'");
     common.check_first_mesh_size(4);
     common.check_magnitudes(prm.gamma0 * common.youngs_modulus /
                             common.thickness);
@@ -180,7 +187,8 @@ namespace NitscheContact
     ny                        = prm.subdivisions[1] * factor;
     hx = prm.length_x / nx;
     hy = prm.length_y / ny;
-    cell_grid.assign(static_cast<std::size_t>(nx) * ny, dof_handler.end());
+    std::vector<DoFHandler<2>::active_cell_iterator> grid(
+      static_cast<std::size_t>(nx) * ny);
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         const Point<2> v0 = cell->vertex(0), v3 = cell->vertex(3);
@@ -190,49 +198,18 @@ namespace NitscheContact
                                "Cartesian mesh it expects"));
         const unsigned int i = static_cast<unsigned int>(v0[0] / hx + 0.5);
         const unsigned int j = static_cast<unsigned int>(v0[1] / hy + 0.5);
-        cell_grid[static_cast<std::size_t>(j) * nx + i] = cell;
+        grid[static_cast<std::size_t>(j) * nx + i] = cell;
       }
+    cell_grid.clear();
+    cell_at.assign(grid.size(), UniformPlateGrid::no_cell);
+    for (std::size_t k = 0; k < grid.size(); ++k)
+      if (grid[k].state() == IteratorState::valid)
+        {
+          cell_at[k] = cell_grid.size();
+          cell_grid.push_back(grid[k]);
+        }
+    make_constraints();
 
-    // Boundary conditions (doc/theory.md 3.4): clamped: everything zero; hard
-    // simple support: w and the tangential rotation zero (soft: w only),
-    // membrane fixed; symmetry: normal rotation and normal membrane
-    // displacement zero; free: natural.
-    constraints.clear();
-    const unsigned int n_comp = fe.n_components();
-    for (unsigned int e = 0; e < 4; ++e)
-      {
-        const unsigned int normal     = e / 2; // 0: x = const, 1: y = const
-        const unsigned int tangential = 1 - normal;
-        std::vector<bool>  mask(n_comp, false);
-        switch (prm.boundary_condition(e))
-          {
-            case EdgeCondition::clamped:
-              std::fill(mask.begin(), mask.end(), true);
-              break;
-            case EdgeCondition::simply_supported:
-              mask[w_component] = true;
-              if (!settings.soft_support)
-                mask[phi_component + tangential] = true;
-              if (settings.membrane)
-                mask[ubar_component] = mask[ubar_component + 1] = true;
-              break;
-            case EdgeCondition::symmetry:
-              mask[phi_component + normal] = true;
-              if (settings.membrane)
-                mask[ubar_component + normal] = true;
-              break;
-            case EdgeCondition::free:
-              break;
-          }
-        if (std::find(mask.begin(), mask.end(), true) != mask.end())
-          VectorTools::interpolate_boundary_values(
-            dof_handler,
-            static_cast<types::boundary_id>(e),
-            Functions::ZeroFunction<2>(n_comp),
-            constraints,
-            ComponentMask(mask));
-      }
-    constraints.close();
 
     use_multigrid    = settings.multigrid &&
                     dof_handler.n_dofs() >= settings.multigrid_min_dofs;
@@ -271,6 +248,55 @@ namespace NitscheContact
     }
     if (use_multigrid)
       setup_multigrid();
+  }
+
+
+  void
+  MindlinModel::make_constraints()
+  {
+    // Boundary conditions (doc/theory.md 3.4): clamped: everything zero; hard
+    // simple support: w and the tangential rotation zero (soft: w only),
+    // membrane fixed; symmetry: normal rotation and normal membrane
+    // displacement zero; free: natural. Zero values of nodal elements: the
+    // components of the mask vanish at the DoFs of each boundary face; the
+    // normal of a face f of a cell in reference orientation is e_{f/2}.
+    constraints.clear();
+    const unsigned int n_comp = fe.n_components();
+    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+    for (const auto &cell : cell_grid)
+      for (const unsigned int f : cell->face_indices())
+        if (cell->at_boundary(f))
+          {
+            const unsigned int normal     = f / 2;
+            const unsigned int tangential = 1 - normal;
+            std::vector<bool>  mask(n_comp, false);
+            switch (prm.boundary_condition(cell->face(f)->boundary_id()))
+              {
+                case EdgeCondition::clamped:
+                  std::fill(mask.begin(), mask.end(), true);
+                  break;
+                case EdgeCondition::simply_supported:
+                  mask[w_component] = true;
+                  if (!settings.soft_support)
+                    mask[phi_component + tangential] = true;
+                  if (settings.membrane)
+                    mask[ubar_component] = mask[ubar_component + 1] = true;
+                  break;
+                case EdgeCondition::symmetry:
+                  mask[phi_component + normal] = true;
+                  if (settings.membrane)
+                    mask[ubar_component + normal] = true;
+                  break;
+                case EdgeCondition::free:
+                  break;
+              }
+            cell->face(f)->get_dof_indices(face_dofs);
+            for (unsigned int i = 0; i < face_dofs.size(); ++i)
+              if (mask[fe.face_system_to_component_index(i).first] &&
+                  !constraints.is_constrained(face_dofs[i]))
+                constraints.add_line(face_dofs[i]);
+          }
+    constraints.close();
   }
 
 
@@ -322,8 +348,7 @@ namespace NitscheContact
     if (use_multigrid)
       setup_multigrid_matrices();
     assemble_constant_part();
-    previous_status.assign(static_cast<std::size_t>(nx) * ny *
-                             contact_quadrature.size(),
+    previous_status.assign(cell_grid.size() * contact_quadrature.size(),
                            0);
     previous_q.clear();
   }

@@ -266,7 +266,7 @@ namespace NitscheContact
   {
     std::vector<double> p(points.size(),
                           std::numeric_limits<double>::quiet_NaN());
-    const UniformPlateGrid grid(nx, ny, prm.length_x, prm.length_y);
+    const UniformPlateGrid grid(nx, ny, prm.length_x, prm.length_y, &cell_at);
     for (unsigned int k = 0; k < points.size(); ++k)
       if (const auto where = grid.locate(points[k]))
         p[k] = cell_contact_means(where->cell).pressure();
@@ -279,7 +279,7 @@ namespace NitscheContact
   MindlinModel::locate(const Point<2> &p, Point<2> &unit_point) const
   {
     const auto where =
-      UniformPlateGrid(nx, ny, prm.length_x, prm.length_y).locate(p);
+      UniformPlateGrid(nx, ny, prm.length_x, prm.length_y, &cell_at).locate(p);
     if (!where)
       return dof_handler.end();
     unit_point = where->unit;

@@ -18,15 +18,22 @@
 namespace NitscheContact
 {
   /// The uniform nx x ny grid of rectangular cells on [0, Lx] x [0, Ly] of
-  /// the plate models, cells numbered with x running fastest.
+  /// the plate models, positions numbered with x running fastest; on the
+  /// L-shape and the rectangle with hole some positions hold no cell.
   class UniformPlateGrid
   {
   public:
-    UniformPlateGrid() = default;
-    UniformPlateGrid(unsigned int nx,
-                     unsigned int ny,
-                     double       length_x,
-                     double       length_y);
+    /// The grid; `cell_at` (if given, kept by pointer) maps each position
+    /// to the model's index of the cell there, or no_cell (none: every
+    /// position holds the cell of the same index).
+    UniformPlateGrid(unsigned int                     nx,
+                     unsigned int                     ny,
+                     double                           length_x,
+                     double                           length_y,
+                     const std::vector<unsigned int> *cell_at = nullptr);
+
+    static constexpr unsigned int no_cell =
+      std::numeric_limits<unsigned int>::max();
 
     /// A cell and the coordinates of a point in its unit cell.
     struct Location
@@ -35,27 +42,16 @@ namespace NitscheContact
       dealii::Point<2> unit;
     };
 
-    /// Where p lies; none outside the plate (beyond round-off of its size).
+    /// Where p lies; none off the plate (beyond round-off of its size). On
+    /// an edge or a vertex of a position without a cell, the neighbour
+    /// with a cell.
     std::optional<Location>
     locate(const dealii::Point<2> &p) const;
 
-    /// value(location) at each point, NaN at points outside the plate.
-    template <class Value>
-    std::vector<double>
-    values_at(const std::vector<dealii::Point<2>> &points,
-              const Value                         &value) const
-    {
-      std::vector<double> values(points.size(),
-                                 std::numeric_limits<double>::quiet_NaN());
-      for (unsigned int k = 0; k < points.size(); ++k)
-        if (const std::optional<Location> where = locate(points[k]))
-          values[k] = value(*where);
-      return values;
-    }
-
   private:
-    unsigned int nx = 1, ny = 1;
-    double       length_x = 1., length_y = 1.;
+    unsigned int                     nx = 1, ny = 1;
+    double                           length_x = 1., length_y = 1.;
+    const std::vector<unsigned int> *cell_at;
   };
 
   /// The means over the contact points of one cell that the plate models

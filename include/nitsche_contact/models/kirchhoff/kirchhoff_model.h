@@ -43,6 +43,7 @@
 #include <nitsche_contact/parameters.h>
 #include <nitsche_contact/solvers/reused_factorization.h>
 
+#include <functional>
 #include <memory>
 
 namespace NitscheContact
@@ -276,10 +277,12 @@ namespace NitscheContact
     /// setup_cycle(): carry the solution of the previous (once coarser)
     /// mesh onto the current one by Hermite interpolation.
     void
-    interpolate_from_coarser(unsigned int               old_nx,
-                             unsigned int               old_ny,
-                             const dealii::Tensor<1, 2> &old_h,
-                             const std::vector<double>  &old_coefficients);
+    interpolate_from_coarser(
+      const std::function<bool(const dealii::Point<2> &,
+                               unsigned int &,
+                               dealii::Point<2> &)> &old_locate,
+      const dealii::Tensor<1, 2>                     &old_h,
+      const std::vector<double>                      &old_coefficients);
 
     // ----- per-cell data (cell_kit.cc)
 
@@ -376,11 +379,22 @@ namespace NitscheContact
     CellContactMeans
     cell_contact_means(unsigned int c) const;
 
-    /// Locate the cell containing p and the unit point; false if outside.
+    /// Locate the cell containing p and the unit point; false if outside
+    /// the plate. On an edge or a vertex shared with a grid position
+    /// outside the plate the cell on the plate's side is taken.
     bool
     locate(const dealii::Point<2> &p,
            unsigned int           &cell_index,
            dealii::Point<2>       &unit) const;
+    /// locate() in the nx x ny grid with the lookup `cell_at` (of this
+    /// mesh or of the previous cycle's).
+    bool
+    locate_in(unsigned int                     nx,
+              unsigned int                     ny,
+              const std::vector<unsigned int> &cell_at,
+              const dealii::Point<2>          &p,
+              unsigned int                    &cell_index,
+              dealii::Point<2>                &unit) const;
     /// L2, H1 and H2 errors against the exact solution.
     void
     compute_errors(CycleResults &res) const;
@@ -428,9 +442,14 @@ namespace NitscheContact
     dealii::MappingCartesian<2>    mapping;
     dealii::AffineConstraints<double> constraints;
     dealii::QGauss<2>              quadrature;
-    unsigned int nx = 0, ny = 0; ///< cells per direction
-    /// Active cells in lexicographic order (ix + nx iy).
+    unsigned int nx = 0, ny = 0; ///< cells per direction of the rectangle
+    /// Active cells in lexicographic order of their (ix, iy) position in
+    /// the nx x ny grid of the rectangle (the L-shape and the rectangle
+    /// with hole leave out some positions).
     std::vector<dealii::DoFHandler<2>::active_cell_iterator> cells;
+    /// per grid position ix + nx iy: the index in `cells`, or no_cell
+    std::vector<unsigned int> cell_at;
+    static constexpr unsigned int no_cell = UniformPlateGrid::no_cell;
     /// 16 global dof indices per cell, same order.
     std::vector<dealii::types::global_dof_index> cell_dofs;
     CellKit kit;

@@ -414,10 +414,18 @@ namespace NitscheContact
     dealii::DoFHandler<2>    dof_handler;
     dealii::AffineConstraints<double> constraints;
 
-    unsigned int nx = 0, ny = 0; ///< cells per direction
+    unsigned int nx = 0, ny = 0; ///< cells per direction of the rectangle
     double       hx = 0., hy = 0.;
-    /// Active cells by Cartesian index j*nx + i.
+    /// Active cells in the order of their position j*nx + i in the nx x ny
+    /// grid of the rectangle (the L-shape and the rectangle with hole leave
+    /// out some positions).
     std::vector<dealii::DoFHandler<2>::active_cell_iterator> cell_grid;
+    /// per grid position j*nx + i: the index in `cell_grid`, or
+    /// UniformPlateGrid::no_cell
+    std::vector<unsigned int> cell_at;
+    /// setup_dofs(): the boundary conditions' constraints.
+    void
+    make_constraints();
 
     // Cell-independent data of the current cycle.
     dealii::Quadrature<2>                        contact_quadrature;
