@@ -63,7 +63,7 @@ for ax, (name, shape, conditions) in zip(axes.flat, SHAPES):
     outdir = os.path.join(out, tag)
     prm = os.path.join(out, tag + ".prm")
     # about as many cells on every shape: the disk's and the annulus's
-    # coarse meshes have 12 and 10 cells, the others 64
+    # coarse meshes have 12 and 8 cells, the others 64
     refinement = 2 if name in ("disk", "annulus") else 0
     with open(prm, "w") as f:
         f.write(TEMPLATE % (shape, conditions, refinement, outdir))

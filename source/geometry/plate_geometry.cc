@@ -123,17 +123,17 @@ namespace NitscheContact
             continue;
           }
         const bool digits =
-          !key.empty() && key.size() <= 3 &&
+          !key.empty() && key.size() <= 9 &&
           std::all_of(key.begin(), key.end(), [](const char ch) {
             return std::isdigit(static_cast<unsigned char>(ch));
           });
-        if (!digits || std::stoi(key) > 254)
+        if (!digits)
           bad_value(conditions_entry,
                     text,
                     "'" + key +
                       "' is no boundary id; allowed are 'all' and the ids "
-                      "0 to 254");
-        const auto id = static_cast<types::boundary_id>(std::stoi(key));
+                      "0 to 999999999");
+        const auto id = static_cast<types::boundary_id>(std::stoul(key));
         if (!bc.by_id.emplace(id, c).second)
           bad_value(conditions_entry,
                     text,
@@ -275,35 +275,44 @@ namespace NitscheContact
             s == "rectangle with hole" ? PlateShape::rectangle_with_hole :
             s == "mesh file"           ? PlateShape::mesh_file :
                                          PlateShape::rectangle;
-    const auto c =
-      parse_doubles(prm.get("Center"), "Geometry/Center", ',');
-    if (c.size() != 2)
-      bad_value("Geometry/Center", prm.get("Center"), "expected 'x, y'");
-    center       = Point<2>(c[0], c[1]);
-    radius       = prm.get_double("Radius");
-    inner_radius = prm.get_double("Inner radius");
-    if (!(radius > 0.) || !std::isfinite(radius))
-      bad_value("Geometry/Radius", prm.get("Radius"), "must be > 0");
-    if (shape == PlateShape::annulus &&
-        !(inner_radius > 0. && inner_radius < radius))
-      bad_value("Geometry/Inner radius",
-                prm.get("Inner radius"),
-                "must lie in (0, Radius) = (0, " + number_to_string(radius) +
-                  ")");
-    const auto h =
-      parse_doubles(prm.get("Hole size"), "Geometry/Hole size", ',');
-    if (h.size() != 2 || !(h[0] > 0. && h[1] > 0.))
-      bad_value("Geometry/Hole size",
-                prm.get("Hole size"),
-                "expected two sides 'a, b' > 0");
-    hole = {{h[0], h[1]}};
-    if (shape == PlateShape::rectangle_with_hole &&
-        !(hole[0] < length_x && hole[1] < length_y))
-      bad_value("Geometry/Hole size",
-                prm.get("Hole size"),
-                "the hole must lie inside the plate: a < Lx = " +
-                  number_to_string(length_x) +
-                  " and b < Ly = " + number_to_string(length_y));
+    // the entries a shape does not use are not checked
+    const bool round = shape == PlateShape::disk || shape == PlateShape::annulus;
+    if (round)
+      {
+        const auto c =
+          parse_doubles(prm.get("Center"), "Geometry/Center", ',');
+        if (c.size() != 2)
+          bad_value("Geometry/Center", prm.get("Center"), "expected 'x, y'");
+        center = Point<2>(c[0], c[1]);
+        radius = prm.get_double("Radius");
+        if (!(radius > 0.) || !std::isfinite(radius))
+          bad_value("Geometry/Radius", prm.get("Radius"), "must be > 0");
+      }
+    if (shape == PlateShape::annulus)
+      {
+        inner_radius = prm.get_double("Inner radius");
+        if (!(inner_radius > 0. && inner_radius < radius))
+          bad_value("Geometry/Inner radius",
+                    prm.get("Inner radius"),
+                    "must lie in (0, Radius) = (0, " +
+                      number_to_string(radius) + ")");
+      }
+    if (shape == PlateShape::rectangle_with_hole)
+      {
+        const auto h =
+          parse_doubles(prm.get("Hole size"), "Geometry/Hole size", ',');
+        if (h.size() != 2 || !(h[0] > 0. && h[1] > 0.))
+          bad_value("Geometry/Hole size",
+                    prm.get("Hole size"),
+                    "expected two sides 'a, b' > 0");
+        hole = {{h[0], h[1]}};
+        if (!(hole[0] < length_x && hole[1] < length_y))
+          bad_value("Geometry/Hole size",
+                    prm.get("Hole size"),
+                    "the hole must lie inside the plate: a < Lx = " +
+                      number_to_string(length_x) +
+                      " and b < Ly = " + number_to_string(length_y));
+      }
     mesh_file = Utilities::trim(prm.get("Mesh file"));
     if (shape == PlateShape::mesh_file && mesh_file.empty())
       bad_value("Geometry/Mesh file", "", "'Shape = mesh file' needs a file");
@@ -542,6 +551,18 @@ namespace NitscheContact
         default:
           return box;
       }
+  }
+
+
+
+  std::uint64_t
+  PlateGeometry::n_coarse_cells(
+    const std::vector<unsigned int> &subdivisions) const
+  {
+    return shape == PlateShape::disk || shape == PlateShape::annulus ||
+               shape == PlateShape::mesh_file ?
+             coarse->n_active_cells() :
+             std::uint64_t(subdivisions[0]) * subdivisions[1];
   }
 
 

@@ -346,19 +346,16 @@ namespace NitscheContact
     const unsigned int children_per_refinement) const
   {
     // (the first mesh must fit in memory; later cycles refine it)
-    if (double(subdivisions[0]) * subdivisions[1] * subdivisions[2] *
+    if (double(geometry.n_coarse_cells(subdivisions)) * subdivisions[2] *
           std::pow(double(children_per_refinement), initial_refinement) >
         1e7)
-      {
-        std::string text;
-        for (const unsigned int n : subdivisions)
-          text += (text.empty() ? "" : ", ") + std::to_string(n);
-        bad_value("Geometry/Subdivisions",
-                  text + "' with 'Initial refinement = " +
-                    std::to_string(initial_refinement),
-                  "the first mesh would have more than 1e7 cells; start "
-                  "coarser and refine with 'Number of cycles'");
-      }
+      bad_value("Geometry/Initial refinement",
+                std::to_string(initial_refinement),
+                "the first mesh would have more than 1e7 cells (" +
+                  std::to_string(geometry.n_coarse_cells(subdivisions) *
+                                 subdivisions[2]) +
+                  " coarse cells); start coarser and refine with 'Number of "
+                  "cycles'");
   }
 
   void

@@ -442,6 +442,21 @@ CASES.append(("unwritable output directory",
               "subsection Output\n  set Directory = %s/out\nend" % blocker,
               ["Output/Directory", blocker + "/out"]))
 
+# a Gmsh mesh of the square [0, 10]^2 in two triangles
+with open(os.path.join(args.workdir, "triangles.msh"), "w") as f:
+    f.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n"
+            "1 0 0 0\n2 10 0 0\n3 10 10 0\n4 0 10 0\n$EndNodes\n"
+            "$Elements\n2\n1 2 2 0 1 1 2 3\n2 2 2 0 1 1 3 4\n$EndElements\n")
+CASES.append(("mesh file of triangles",
+              "set Model = membrane\nsubsection Geometry\n  set Shape = mesh file\n"
+              "  set Mesh file = triangles.msh\nend",
+              ["Geometry/Mesh file", "triangles.msh", "not a quadrilateral",
+               "at 6.66667, 3.33333"]))
+CASES.append(("boundary id 1000 on the rectangle",
+              "subsection Geometry\n  set Boundary conditions = 1000: free; "
+              "all: clamped\nend",
+              ["Geometry/Boundary conditions", "no boundary id 1000"]))
+
 for i, (case, body, expected) in enumerate(CASES):
     prm = os.path.join(args.workdir, "case%02d.prm" % i)
     outdir = os.path.join(args.workdir, "case%02d-out" % i)

@@ -132,6 +132,9 @@ namespace NitscheContact
     /// Whether p lies on the plate (closed, within 1e-10 of its size).
     bool
     contains(const dealii::Point<2> &p) const;
+    /// The number of cells of the coarse mesh, before 'Initial refinement'.
+    std::uint64_t
+    n_coarse_cells(const std::vector<unsigned int> &subdivisions) const;
     /// The boundary ids of the mesh.
     std::set<dealii::types::boundary_id> boundary_ids;
     /// The points of the mesh's boundary parts with a deflection held at 0

@@ -21,29 +21,30 @@ namespace NitscheContact
   std::optional<UniformPlateGrid::Location>
   UniformPlateGrid::locate(const dealii::Point<2> &p) const
   {
-    const double tol = 1e-12 * std::max(length_x, length_y);
-    if (!(p[0] >= -tol && p[0] <= length_x + tol && p[1] >= -tol &&
-          p[1] <= length_y + tol))
-      return std::nullopt;
-    const double       hx = length_x / nx, hy = length_y / ny;
-    const unsigned int i =
-      std::min(nx - 1, static_cast<unsigned int>(std::max(0., p[0] / hx)));
-    const unsigned int j =
-      std::min(ny - 1, static_cast<unsigned int>(std::max(0., p[1] / hy)));
-    const dealii::Point<2> unit(std::clamp((p[0] - i * hx) / hx, 0., 1.),
-                                std::clamp((p[1] - j * hy) / hy, 0., 1.));
-    if (cell_at == nullptr)
-      return Location{i + nx * j, unit};
-    // the position (i, j), or on its lower or left edge a neighbour
-    for (const unsigned int di : {0u, 1u})
-      for (const unsigned int dj : {0u, 1u})
+    const double hx = length_x / nx, hy = length_y / ny;
+    const int    i = std::min<int>(nx - 1, std::max(0., p[0] / hx));
+    const int    j = std::min<int>(ny - 1, std::max(0., p[1] / hy));
+    // the position (i, j), or, for a point on its edge beside a hole, the
+    // neighbouring position that shares the edge; the tolerance is the one
+    // of PlateGeometry::contains
+    const double slack = 1e-10 * std::max(length_x, length_y);
+    for (const int dj : {0, -1, 1})
+      for (const int di : {0, -1, 1})
         {
-          if ((di == 1 && (i == 0 || unit[0] > 1e-10)) ||
-              (dj == 1 && (j == 0 || unit[1] > 1e-10)))
+          const int ci = i + di, cj = j + dj;
+          if (ci < 0 || cj < 0 || ci >= static_cast<int>(nx) ||
+              cj >= static_cast<int>(ny))
             continue;
-          const unsigned int c = (*cell_at)[(i - di) + nx * (j - dj)];
+          const double ux = (p[0] - ci * hx) / hx, uy = (p[1] - cj * hy) / hy;
+          if (ux < -slack / hx || ux > 1. + slack / hx || uy < -slack / hy ||
+              uy > 1. + slack / hy)
+            continue;
+          const unsigned int c =
+            cell_at == nullptr ? ci + nx * cj : (*cell_at)[ci + nx * cj];
           if (c != no_cell)
-            return Location{c, dealii::Point<2>(unit[0] + di, unit[1] + dj)};
+            return Location{c,
+                            dealii::Point<2>(std::clamp(ux, 0., 1.),
+                                             std::clamp(uy, 0., 1.))};
         }
     return std::nullopt;
   }

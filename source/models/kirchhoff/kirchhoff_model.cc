@@ -270,7 +270,10 @@ namespace NitscheContact
       old_solution = [&](const Point<2> &p) {
         unsigned int c;
         Point<2>     unit;
-        old_locate(p, c, unit);
+        const bool found = old_locate(p, c, unit);
+        AssertThrow(found,
+                    ExcMessage("a vertex of the refined Kirchhoff mesh lies "
+                               "outside the coarser mesh"));
         fe.evaluate(unit, old_h, v, g, hs);
         HermiteTools::VertexData d = {{0., 0., 0., 0.}};
         const double *cf = &coeff[16 * c];

@@ -65,9 +65,9 @@ namespace NitscheContact
     const unsigned int n  = fe->n_dofs_per_cell();
     const unsigned int nc = contact_quadrature.size(),
                        nb = bulk_quadrature.size();
-    FEValues<2> bulk(mapping, *fe, bulk_quadrature,
+    FEValues<2> bulk(*mapping, *fe, bulk_quadrature,
                      update_values | update_gradients | update_JxW_values);
-    FEValues<2> contact(mapping, *fe, contact_quadrature,
+    FEValues<2> contact(*mapping, *fe, contact_quadrature,
                         update_values | update_hessians | update_JxW_values);
     FullMatrix<double>                   cell_matrix(n, n);
     Vector<double>                       cell_residual(n), u(n);
@@ -195,7 +195,7 @@ namespace NitscheContact
     if (!has_energy())
       return std::numeric_limits<double>::quiet_NaN();
     const unsigned int nb = bulk_quadrature.size();
-    FEValues<2>        bulk(mapping, *fe, bulk_quadrature,
+    FEValues<2>        bulk(*mapping, *fe, bulk_quadrature,
                      update_values | update_gradients | update_JxW_values);
     std::vector<double>       w(nb);
     std::vector<Tensor<1, 2>> grad_w(nb);
@@ -230,7 +230,7 @@ namespace NitscheContact
   double
   MembraneModel::energy_norm(const Vector<double> &v) const
   {
-    FEValues<2> bulk(mapping, *fe, bulk_quadrature,
+    FEValues<2> bulk(*mapping, *fe, bulk_quadrature,
                      update_gradients | update_JxW_values);
     std::vector<Tensor<1, 2>> grad(bulk_quadrature.size());
     double                    e = 0.;
@@ -257,7 +257,7 @@ namespace NitscheContact
     const auto         cell = dof_handler.begin_active();
     const double       h    = longest_side(cell);
     FullMatrix<double> s(n, n), a(n, n);
-    FEValues<2>        contact(mapping, *fe, contact_quadrature,
+    FEValues<2>        contact(*mapping, *fe, contact_quadrature,
                         update_hessians | update_JxW_values);
     contact.reinit(cell);
     for (unsigned int q = 0; q < contact_quadrature.size(); ++q)
@@ -265,7 +265,7 @@ namespace NitscheContact
         for (unsigned int j = 0; j < n; ++j)
           s(i, j) += h * h * trace(contact.shape_hessian(i, q)) *
                      trace(contact.shape_hessian(j, q)) * contact.JxW(q);
-    FEValues<2> bulk(mapping, *fe, bulk_quadrature,
+    FEValues<2> bulk(*mapping, *fe, bulk_quadrature,
                      update_gradients | update_JxW_values);
     bulk.reinit(cell);
     for (unsigned int q = 0; q < bulk_quadrature.size(); ++q)

@@ -28,7 +28,6 @@ namespace NitscheContact
     , comm(comm)
     , obstacle(common)
     , dof_handler(triangulation)
-    , mapping(1)
     , factorization(ReusedFactorization::Settings{
         "Amesos_Mumps",
         true,
@@ -49,6 +48,7 @@ namespace NitscheContact
                 "the membrane model is frictionless; allowed is 0");
     read_parameters(param);
     fe              = std::make_unique<FE_Q<2>>(degree);
+    mapping         = std::make_unique<MappingQ<2>>(degree);
     bulk_quadrature = QGauss<2>(degree + 1);
     contact_quadrature =
       contact_rule(contact_rule_name,
@@ -116,7 +116,7 @@ namespace NitscheContact
       if (prm.boundary_condition(b) == EdgeCondition::clamped ||
           prm.boundary_condition(b) == EdgeCondition::simply_supported)
         VectorTools::interpolate_boundary_values(
-          mapping, dof_handler, b, Functions::ZeroFunction<2>(), constraints);
+          *mapping, dof_handler, b, Functions::ZeroFunction<2>(), constraints);
     constraints.close();
 
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
@@ -145,9 +145,9 @@ namespace NitscheContact
     bulk_load.resize(n_cells * nb);
     unit_load.reinit(dof_handler.n_dofs());
 
-    FEValues<2> contact_values(mapping, *fe, contact_quadrature,
+    FEValues<2> contact_values(*mapping, *fe, contact_quadrature,
                                update_quadrature_points);
-    FEValues<2> bulk_values(mapping, *fe, bulk_quadrature,
+    FEValues<2> bulk_values(*mapping, *fe, bulk_quadrature,
                             update_values | update_quadrature_points |
                               update_JxW_values);
     Vector<double> cell_load(fe->n_dofs_per_cell());

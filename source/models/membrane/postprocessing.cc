@@ -57,18 +57,52 @@ namespace NitscheContact
 
 
 
+  std::pair<Triangulation<2>::active_cell_iterator, Point<2>>
+  MembraneModel::locate(const GridTools::Cache<2>                    &cache,
+                        const Point<2>                               &p,
+                        const Triangulation<2>::active_cell_iterator &hint) const
+  {
+    const auto found = GridTools::find_active_cell_around_point(cache, p, hint);
+    if (found.first != triangulation.end() || !prm.geometry.contains(p))
+      return found;
+    // between the mapped outline and the exact curved edge: the cell around
+    // the nearest vertex whose unit coordinates lie nearest the unit square
+    const unsigned int vertex = GridTools::find_closest_vertex(*mapping,
+                                                               triangulation,
+                                                               p);
+    std::pair<Triangulation<2>::active_cell_iterator, Point<2>> best(
+      triangulation.end(), Point<2>());
+    double best_distance = std::numeric_limits<double>::max();
+    for (const auto &cell : cache.get_vertex_to_cell_map()[vertex])
+      try
+        {
+          const Point<2> unit = mapping->transform_real_to_unit_cell(cell, p);
+          const double   d    = GeometryInfo<2>::distance_to_unit_cell(unit);
+          if (d < best_distance)
+            {
+              best_distance = d;
+              best = {cell, GeometryInfo<2>::project_to_unit_cell(unit)};
+            }
+        }
+      catch (const Mapping<2>::ExcTransformationFailed &)
+        {
+        }
+    return best;
+  }
+
+
+
   std::vector<double>
   MembraneModel::deflection_at(const std::vector<Point<2>> &points) const
   {
     std::vector<double> w(points.size(),
                           std::numeric_limits<double>::quiet_NaN());
-    const GridTools::Cache<2> cache(triangulation, mapping);
+    const GridTools::Cache<2> cache(triangulation, *mapping);
     Triangulation<2>::active_cell_iterator hint;
     Vector<double>                          u(fe->n_dofs_per_cell());
     for (unsigned int k = 0; k < points.size(); ++k)
       {
-        const auto [cell, unit] =
-          GridTools::find_active_cell_around_point(cache, points[k], hint);
+        const auto [cell, unit] = locate(cache, points[k], hint);
         if (cell == triangulation.end())
           continue;
         hint = cell;
@@ -112,14 +146,13 @@ namespace NitscheContact
   {
     std::vector<double> p(points.size(),
                           std::numeric_limits<double>::quiet_NaN());
-    FEValues<2> contact(mapping, *fe, contact_quadrature,
+    FEValues<2> contact(*mapping, *fe, contact_quadrature,
                         update_values | update_hessians | update_JxW_values);
-    const GridTools::Cache<2>              cache(triangulation, mapping);
+    const GridTools::Cache<2>              cache(triangulation, *mapping);
     Triangulation<2>::active_cell_iterator hint;
     for (unsigned int k = 0; k < points.size(); ++k)
       {
-        const auto found =
-          GridTools::find_active_cell_around_point(cache, points[k], hint);
+        const auto found = locate(cache, points[k], hint);
         if (found.first == triangulation.end())
           continue;
         hint = found.first;
@@ -137,7 +170,7 @@ namespace NitscheContact
   std::vector<ContactPointRecord>
   MembraneModel::contact_points() const
   {
-    FEValues<2> contact(mapping, *fe, contact_quadrature,
+    FEValues<2> contact(*mapping, *fe, contact_quadrature,
                         update_values | update_hessians |
                           update_quadrature_points | update_JxW_values);
     Vector<double>                  u(fe->n_dofs_per_cell());
@@ -171,7 +204,7 @@ namespace NitscheContact
     // nodal values) and at the contact points, where Q2 can go beyond them
     res.min_deflection = *std::min_element(solution.begin(), solution.end());
     res.max_deflection = *std::max_element(solution.begin(), solution.end());
-    FEValues<2> contact(mapping, *fe, contact_quadrature,
+    FEValues<2> contact(*mapping, *fe, contact_quadrature,
                         update_values | update_hessians | update_JxW_values);
     Vector<double>          u(fe->n_dofs_per_cell());
     std::vector<PointInput> inputs;
@@ -220,7 +253,7 @@ namespace NitscheContact
          {std::make_pair("L2", VectorTools::L2_norm),
           std::make_pair("H1", VectorTools::H1_seminorm)})
       {
-        VectorTools::integrate_difference(mapping, dof_handler, solution, exact,
+        VectorTools::integrate_difference(*mapping, dof_handler, solution, exact,
                                           cell_errors, quadrature, norm);
         res.errors.emplace_back(name,
                                 VectorTools::compute_global_error(
@@ -239,7 +272,7 @@ namespace NitscheContact
     Vector<float> pressure(triangulation.n_active_cells()),
       fraction(triangulation.n_active_cells()),
       gap(triangulation.n_active_cells());
-    FEValues<2> contact(mapping, *fe, contact_quadrature,
+    FEValues<2> contact(*mapping, *fe, contact_quadrature,
                         update_values | update_hessians | update_JxW_values);
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
@@ -256,7 +289,7 @@ namespace NitscheContact
     data_out.add_data_vector(pressure, "contact_pressure");
     data_out.add_data_vector(fraction, "contact_fraction");
     data_out.add_data_vector(gap, "gap");
-    data_out.build_patches(mapping, degree);
+    data_out.build_patches(*mapping, degree);
     const std::string record = data_out.write_vtu_with_pvtu_record(
       directory + "/", "membrane", cycle, comm, 2);
     return {{"solution", record}};

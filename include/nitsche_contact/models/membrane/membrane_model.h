@@ -30,6 +30,7 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q.h>
+#include <deal.II/grid/grid_tools_cache.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -225,6 +226,15 @@ namespace NitscheContact
     cell_contact_means(const dealii::DoFHandler<2>::active_cell_iterator &cell,
                        dealii::FEValues<2> &contact) const;
 
+    /// The cell holding p and p's unit coordinates in it, searched from
+    /// `hint`; a point of the plate just outside the polygonal outline of
+    /// the mapped cells (on a curved edge) is taken to the nearest cell.
+    /// Returns the end iterator for a point off the plate.
+    std::pair<dealii::Triangulation<2>::active_cell_iterator, dealii::Point<2>>
+    locate(const dealii::GridTools::Cache<2>                   &cache,
+           const dealii::Point<2>                               &p,
+           const dealii::Triangulation<2>::active_cell_iterator &hint) const;
+
     /// L2 and H1 errors against 'Reference solution/Exact solution'.
     void
     compute_errors(CycleResults &res) const;
@@ -245,7 +255,8 @@ namespace NitscheContact
     dealii::Triangulation<2>          triangulation;
     std::unique_ptr<dealii::FE_Q<2>>  fe;
     dealii::DoFHandler<2>             dof_handler;
-    dealii::MappingQ<2>               mapping;
+    /// of the element's degree, so that curved boundaries converge with it
+    std::unique_ptr<dealii::MappingQ<2>> mapping;
     dealii::AffineConstraints<double> constraints;
     dealii::Quadrature<2>             bulk_quadrature;
     dealii::Quadrature<2>             contact_quadrature;
