@@ -355,7 +355,7 @@ CASES = [
      ["Geometry/Boundary conditions", "boundary id 2", "has no condition"]),
     ("a plate model on a disk",
      "set Model = kirchhoff\nsubsection Geometry\n  set Shape = disk\nend",
-     ["Geometry/Shape", "'disk'", "'L-shape' and 'rectangle with hole' only", "membrane"]),
+     ["Geometry/Shape", "'disk'", "'L-shape' and 'rectangle with hole' only", "Mindlin and the membrane"]),
     ("the 3D model on an L-shape",
      "subsection Geometry\n  set Shape = L-shape\n  set Subdivisions = 2, 2, 1\nend",
      ["Geometry/Shape", "'L-shape'", "'rectangle' only"]),

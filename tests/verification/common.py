@@ -250,3 +250,59 @@ def finish():
         print("%d check(s) failed" % len(failures))
         sys.exit(1)
     print("all checks passed")
+
+
+def write_msh(path, lx, ly, nx, ny, removed, position=None):
+    """Gmsh 2.2 (or UCD for a .ucd path): the cells of the nx x ny grid of [0,lx] x [0,ly] whose
+    centre is not in removed(x, y), and the boundary edges with the
+    built-in shapes' ids (physical tags) 0..3 on x = 0, lx, y = 0, ly and
+    4 elsewhere; position(x, y), if given, moves the grid's nodes."""
+    moved = position or (lambda x, y: (x, y))
+    node = lambda i, j: j * (nx + 1) + i + 1
+    cells = [(i, j) for j in range(ny) for i in range(nx)
+             if not removed((i + 0.5) * lx / nx, (j + 0.5) * ly / ny)]
+    edges = {}
+    for i, j in cells:
+        for a, b in ((node(i, j), node(i + 1, j)), (node(i + 1, j), node(i + 1, j + 1)),
+                     (node(i + 1, j + 1), node(i, j + 1)), (node(i, j + 1), node(i, j))):
+            key = (min(a, b), max(a, b))
+            edges[key] = None if key in edges else (a, b)
+    xy = lambda n: (((n - 1) % (nx + 1)) * lx / nx, ((n - 1) // (nx + 1)) * ly / ny)
+    lines = []
+    for e in edges.values():
+        if e is None:
+            continue
+        (x0, y0), (x1, y1) = xy(e[0]), xy(e[1])
+        tag = (0 if x0 == x1 == 0 else 1 if x0 == x1 == lx else
+               2 if y0 == y1 == 0 else 3 if y0 == y1 == ly else 4)
+        lines.append((tag, e))
+    if path.endswith(".ucd"):
+        with open(path, "w") as f:
+            f.write("# UCD\n%d %d 0 0 0\n" % ((nx + 1) * (ny + 1), len(lines) + len(cells)))
+            for j in range(ny + 1):
+                for i in range(nx + 1):
+                    f.write("%d %r %r 0\n" % ((node(i, j),) + moved(i * lx / nx, j * ly / ny)))
+            k = 1
+            for i, j in cells:
+                f.write("%d 0 quad %d %d %d %d\n" % (k, node(i, j), node(i + 1, j),
+                                                      node(i + 1, j + 1), node(i, j + 1)))
+                k += 1
+            for tag, (a, b) in lines:
+                f.write("%d %d line %d %d\n" % (k, tag, a, b))
+                k += 1
+        return
+    with open(path, "w") as f:
+        f.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n%d\n" % ((nx + 1) * (ny + 1)))
+        for j in range(ny + 1):
+            for i in range(nx + 1):
+                f.write("%d %r %r 0\n" % ((node(i, j),) + moved(i * lx / nx, j * ly / ny)))
+        f.write("$EndNodes\n$Elements\n%d\n" % (len(lines) + len(cells)))
+        k = 1
+        for tag, (a, b) in lines:
+            f.write("%d 1 2 %d %d %d %d\n" % (k, tag, tag + 1, a, b))
+            k += 1
+        for i, j in cells:
+            f.write("%d 3 2 7 7 %d %d %d %d\n" % (k, node(i, j), node(i + 1, j),
+                                                node(i + 1, j + 1), node(i, j + 1)))
+            k += 1
+        f.write("$EndElements\n")

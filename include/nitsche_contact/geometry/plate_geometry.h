@@ -9,6 +9,7 @@
 #include <deal.II/base/types.h>
 #include <deal.II/grid/tria.h>
 
+#include <algorithm>
 #include <array>
 #include <map>
 #include <memory>
@@ -174,6 +175,14 @@ namespace NitscheContact
     PlateShape::rectangle,
     PlateShape::l_shape,
     PlateShape::rectangle_with_hole};
+
+  /// Whether a shape is one of cartesian_shapes.
+  inline bool
+  is_cartesian(const PlateShape shape)
+  {
+    return std::find(cartesian_shapes.begin(), cartesian_shapes.end(),
+                     shape) != cartesian_shapes.end();
+  }
 } // namespace NitscheContact
 
 #endif

@@ -1,4 +1,7 @@
 // Postprocessing that the models share (postprocessing_tools.h).
+#include <deal.II/grid/grid_tools.h>
+
+#include <nitsche_contact/geometry/plate_geometry.h>
 #include <nitsche_contact/models/common/postprocessing_tools.h>
 #include <nitsche_contact/parameters.h>
 
@@ -48,6 +51,44 @@ namespace NitscheContact
         }
     return std::nullopt;
   }
+
+  std::pair<dealii::Triangulation<2>::active_cell_iterator, dealii::Point<2>>
+  locate_on_plate(const dealii::GridTools::Cache<2> &cache,
+                  const PlateGeometry               &geometry,
+                  const dealii::Point<2>            &p,
+                  const dealii::Triangulation<2>::active_cell_iterator &hint)
+  {
+    using namespace dealii;
+    const Triangulation<2> &tria    = cache.get_triangulation();
+    const Mapping<2>       &mapping = cache.get_mapping();
+    const auto found = GridTools::find_active_cell_around_point(cache, p, hint);
+    if (found.first != tria.end() || !geometry.contains(p))
+      return found;
+    // the cell around the nearest vertex whose unit coordinates lie
+    // nearest the unit square
+    const unsigned int vertex =
+      GridTools::find_closest_vertex(mapping, tria, p);
+    std::pair<Triangulation<2>::active_cell_iterator, Point<2>> best(
+      tria.end(), Point<2>());
+    double best_distance = std::numeric_limits<double>::max();
+    for (const auto &cell : cache.get_vertex_to_cell_map()[vertex])
+      try
+        {
+          const Point<2> unit = mapping.transform_real_to_unit_cell(cell, p);
+          const double   d    = GeometryInfo<2>::distance_to_unit_cell(unit);
+          if (d < best_distance)
+            {
+              best_distance = d;
+              best = {cell, GeometryInfo<2>::project_to_unit_cell(unit)};
+            }
+        }
+      catch (const Mapping<2>::ExcTransformationFailed &)
+        {
+        }
+    return best;
+  }
+
+
 
   void
   ContactTotals::add(const PointInput &in, const PointState &st, const double JxW)

@@ -31,7 +31,8 @@ namespace NitscheContact
     // the checks of the common input that depend on the model: a
     // hexahedron refines into 8, r = gamma0 E / t, and the contact surface
     // is the bottom face
-    require_shape(prm.geometry, {PlateShape::rectangle}, "the model 'elasticity'", "the membrane model solves every shape");
+    require_shape(prm.geometry, {PlateShape::rectangle}, "the model 'elasticity'",
+                  "the Mindlin and the membrane models solve every shape");
     prm.check_first_mesh_size(8);
     prm.use_model_gamma0(60.);
     prm.check_magnitudes(prm.gamma0 * prm.youngs_modulus / prm.thickness);

@@ -202,7 +202,8 @@ namespace NitscheContact
     // mid-plane, and a compliant obstacle may lie above a supported edge
     require_shape(prm.geometry, cartesian_shapes, "the model 'kirchhoff'",
                   "its element is C1 on a uniform grid of axis-parallel "
-                  "rectangles only; the membrane model solves every shape");
+                  "rectangles only; the Mindlin and the membrane models "
+                  "solve every shape");
     if (use_multigrid)
       require_shape(prm.geometry, {PlateShape::rectangle},
                     "'Kirchhoff/Linear solver/Type = multigrid'",

@@ -57,41 +57,6 @@ namespace NitscheContact
 
 
 
-  std::pair<Triangulation<2>::active_cell_iterator, Point<2>>
-  MembraneModel::locate(const GridTools::Cache<2>                    &cache,
-                        const Point<2>                               &p,
-                        const Triangulation<2>::active_cell_iterator &hint) const
-  {
-    const auto found = GridTools::find_active_cell_around_point(cache, p, hint);
-    if (found.first != triangulation.end() || !prm.geometry.contains(p))
-      return found;
-    // between the mapped outline and the exact curved edge: the cell around
-    // the nearest vertex whose unit coordinates lie nearest the unit square
-    const unsigned int vertex = GridTools::find_closest_vertex(*mapping,
-                                                               triangulation,
-                                                               p);
-    std::pair<Triangulation<2>::active_cell_iterator, Point<2>> best(
-      triangulation.end(), Point<2>());
-    double best_distance = std::numeric_limits<double>::max();
-    for (const auto &cell : cache.get_vertex_to_cell_map()[vertex])
-      try
-        {
-          const Point<2> unit = mapping->transform_real_to_unit_cell(cell, p);
-          const double   d    = GeometryInfo<2>::distance_to_unit_cell(unit);
-          if (d < best_distance)
-            {
-              best_distance = d;
-              best = {cell, GeometryInfo<2>::project_to_unit_cell(unit)};
-            }
-        }
-      catch (const Mapping<2>::ExcTransformationFailed &)
-        {
-        }
-    return best;
-  }
-
-
-
   std::vector<double>
   MembraneModel::deflection_at(const std::vector<Point<2>> &points) const
   {
@@ -102,7 +67,7 @@ namespace NitscheContact
     Vector<double>                          u(fe->n_dofs_per_cell());
     for (unsigned int k = 0; k < points.size(); ++k)
       {
-        const auto [cell, unit] = locate(cache, points[k], hint);
+        const auto [cell, unit] = locate_on_plate(cache, prm.geometry, points[k], hint);
         if (cell == triangulation.end())
           continue;
         hint = cell;
@@ -152,7 +117,7 @@ namespace NitscheContact
     Triangulation<2>::active_cell_iterator hint;
     for (unsigned int k = 0; k < points.size(); ++k)
       {
-        const auto found = locate(cache, points[k], hint);
+        const auto found = locate_on_plate(cache, prm.geometry, points[k], hint);
         if (found.first == triangulation.end())
           continue;
         hint = found.first;

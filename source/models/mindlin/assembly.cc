@@ -39,41 +39,41 @@ namespace NitscheContact
     constant_part_stale = false;
     if (assembled_matrix)
       constant_matrix = 0.;
-    load = 0.;
+    load          = 0.;
+    load_integral = 0.;
     const unsigned int n = fe.n_dofs_per_cell();
     std::vector<types::global_dof_index> dofs(n);
     Vector<double>                       cell_load(n);
-    const QGauss<2>                      q2(fe.degree + 1);
-    std::vector<std::vector<double>>     values(q2.size(),
-                                            std::vector<double>(n));
-    for (unsigned int q = 0; q < q2.size(); ++q)
-      for (unsigned int i = 0; i < n; ++i)
-        values[q][i] = fe.system_to_component_index(i).first == w_component ?
-                         fe.shape_value(i, q2.point(q)) :
-                         0.;
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    ElementScratch                       scratch(*this);
+    FEValues<2>                          values(mapping, fe, bulk_quadrature,
+                       update_values | update_quadrature_points |
+                         update_JxW_values);
+    for (std::size_t c = 0; c < cell_grid.size(); ++c)
       {
+        const auto &cell = cell_grid[c];
         cell->get_dof_indices(dofs);
+        values.reinit(cell);
         cell_load = 0.;
-        const Point<2> v0 = cell->vertex(0);
-        for (unsigned int q = 0; q < q2.size(); ++q)
+        for (unsigned int q = 0; q < bulk_quadrature.size(); ++q)
           {
-            const Point<2> x(v0[0] + q2.point(q)[0] * hx,
-                             v0[1] + q2.point(q)[1] * hy);
-            const double   value = load_function->value(x);
+            const Point<2> &x     = values.quadrature_point(q);
+            const double    value = load_function->value(x);
             if (!std::isfinite(value))
               non_finite_at_point("Load/Transverse load",
                                   prm.load_expression, value, x);
-            const double f = value * q2.weight(q) * hx * hy;
+            load_integral += value * values.JxW(q);
             for (unsigned int i = 0; i < n; ++i)
-              cell_load(i) += f * values[q][i];
+              if (fe.system_to_component_index(i).first == w_component)
+                cell_load(i) += value * values.shape_value(i, q) *
+                                values.JxW(q);
           }
         if (assembled_matrix)
-          constraints.distribute_local_to_global(constant_cell_matrix,
-                                                 cell_load,
-                                                 dofs,
-                                                 constant_matrix,
-                                                 load);
+          constraints.distribute_local_to_global(
+            element_data(c, scratch).constant_matrix,
+            cell_load,
+            dofs,
+            constant_matrix,
+            load);
         else
           constraints.distribute_local_to_global(cell_load, dofs, load);
       }
@@ -85,14 +85,15 @@ namespace NitscheContact
 
 
 
-  MindlinModel::CellScratch::CellScratch(const unsigned int n)
-    : dofs(n)
-    , u(n)
-    , residual(n)
-    , tmp(n)
-    , point_law(n)
-    , point_branch(n)
-    , matrix(n, n)
+  MindlinModel::CellScratch::CellScratch(const MindlinModel &model)
+    : element(model)
+    , dofs(model.fe.n_dofs_per_cell())
+    , u(model.fe.n_dofs_per_cell())
+    , residual(model.fe.n_dofs_per_cell())
+    , tmp(model.fe.n_dofs_per_cell())
+    , point_law(model.fe.n_dofs_per_cell())
+    , point_branch(model.fe.n_dofs_per_cell())
+    , matrix(model.fe.n_dofs_per_cell(), model.fe.n_dofs_per_cell())
   {}
 
 
@@ -139,7 +140,7 @@ namespace NitscheContact
     cell_energies.resize(n_cells);
     if (build_matrix)
       {
-        CellScratch scratch(n);
+        CellScratch scratch(*this);
         for (std::size_t c = 0; c < n_cells; ++c)
           assemble_cell(c, pass, scratch, true);
       }
@@ -148,7 +149,7 @@ namespace NitscheContact
         std::size_t(0),
         n_cells,
         [&](const std::size_t begin, const std::size_t end) {
-          CellScratch scratch(n);
+          CellScratch scratch(*this);
           for (std::size_t c = begin; c < end; ++c)
             assemble_cell(c, pass, scratch, false);
         },
@@ -202,23 +203,24 @@ namespace NitscheContact
     const unsigned int  nq     = contact_quadrature.size();
     FullMatrix<double> *matrix = build_matrix ? &scratch.matrix : nullptr;
     const auto         &cell   = cell_grid[c];
+    const ElementData  &d      = element_data(c, scratch.element);
     cell->get_dof_indices(scratch.dofs);
     for (unsigned int i = 0; i < n; ++i)
       scratch.u(i) = solution(scratch.dofs[i]);
     // Constant part: (bulk + theta-terms) U.
-    constant_cell_matrix.vmult(scratch.residual, scratch.u);
+    d.constant_matrix.vmult(scratch.residual, scratch.u);
     bool   any_active = false;
     double energy     = 0.;
     for (unsigned int q = 0; q < nq; ++q)
       {
         const std::size_t k  = c * nq + q;
-        const PointInput  in = point_input(scratch.u, q, gaps[k]);
+        const PointInput  in = point_input(d, scratch.u, q, gaps[k]);
         const PointState  st = evaluate_contact_point(in, pass.scheme);
         pass.status[k]       = static_cast<unsigned char>(st.status);
         if (pass.track_q)
           pass.qs[k] = st.q;
         if (pass.with_energy)
-          energy += contact_energy_density(in, st) * contact_JxW[q];
+          energy += contact_energy_density(in, st) * d.contact_JxW[q];
         if (st.status == PointStatus::inactive)
           continue;
         if (!any_active && matrix)
@@ -235,10 +237,10 @@ namespace NitscheContact
             ++pass.n_reversed;
             scratch.point_law    = 0.;
             scratch.point_branch = 0.;
-            add_point_contribution(in, st, contact_shapes[q],
-                                   contact_JxW[q], nullptr, scratch.point_law);
+            add_point_contribution(in, st, d.contact_shapes[q],
+                                   d.contact_JxW[q], nullptr, scratch.point_law);
             add_point_contribution(in, stick_branch(in, st),
-                                   contact_shapes[q], contact_JxW[q],
+                                   d.contact_shapes[q], d.contact_JxW[q],
                                    matrix, scratch.point_branch);
             scratch.residual += scratch.point_law;
             scratch.point_branch -= scratch.point_law;
@@ -250,14 +252,14 @@ namespace NitscheContact
         else
           add_point_contribution(in,
                                  st,
-                                 contact_shapes[q],
-                                 contact_JxW[q],
+                                 d.contact_shapes[q],
+                                 d.contact_JxW[q],
                                  matrix,
                                  scratch.residual);
-        theta_matrices[q].vmult(scratch.tmp, scratch.u);
+        d.theta_matrices[q].vmult(scratch.tmp, scratch.u);
         scratch.residual -= scratch.tmp;
         if (matrix)
-          matrix->add(-1., theta_matrices[q]);
+          matrix->add(-1., d.theta_matrices[q]);
       }
     cell_energies[c] = energy;
     for (unsigned int i = 0; i < n; ++i)
@@ -321,27 +323,29 @@ namespace NitscheContact
     std::vector<types::global_dof_index> dofs(n);
     std::vector<double>                  u(n);
     double                               bulk = 0.;
-    for (const auto &cell : cell_grid)
+    ElementScratch                       scratch(*this);
+    for (std::size_t c = 0; c < cell_grid.size(); ++c)
       {
-        cell->get_dof_indices(dofs);
+        const ElementData &d = element_data(c, scratch);
+        cell_grid[c]->get_dof_indices(dofs);
         for (unsigned int i = 0; i < n; ++i)
           u[i] = solution(dofs[i]);
-        for (unsigned int q = 0; q < bulk_JxW.size(); ++q)
+        for (unsigned int q = 0; q < d.bulk_JxW.size(); ++q)
           {
             SymmetricTensor<2, 2> k, e;
             Tensor<1, 2>          g;
             for (unsigned int i = 0; i < n; ++i)
               if (u[i] != 0.)
                 {
-                  k += u[i] * bulk_curvature[q][i];
-                  e += u[i] * bulk_membrane[q][i];
-                  g += u[i] * bulk_shear[q][i];
+                  k += u[i] * d.bulk_curvature[q][i];
+                  e += u[i] * d.bulk_membrane[q][i];
+                  g += u[i] * d.bulk_shear[q][i];
                 }
             bulk += 0.5 *
                     (D * ((1. - nu) * (k * k) + nu * trace(k) * trace(k)) +
                      S * (g * g) +
                      Dm * ((1. - nu) * (e * e) + nu * trace(e) * trace(e))) *
-                    bulk_JxW[q];
+                    d.bulk_JxW[q];
           }
       }
     return bulk - load_factor * (load * solution) + last_contact_energy;

@@ -1,6 +1,7 @@
 // The element: the assumed transverse shear strain of the MITC4 and
-// MITC9 plates and the cell-independent data built from it once per cycle
-// (bulk stiffness, contact-point quantities of the shape functions, gaps).
+// MITC9 plates (covariant tying) and the element data of a cell built from
+// it (bulk stiffness, contact-point quantities of the shape functions),
+// and the gaps.
 #include <nitsche_contact/models/mindlin/mindlin_model.h>
 
 #include <cmath>
@@ -11,22 +12,131 @@ namespace NitscheContact
 
   namespace
   {
-    /// The physical gradient of shape function i at unit point p of an
-    /// axis-aligned hx x hy rectangle.
-    Tensor<1, 2>
-    physical_grad(const FiniteElement<2> &fe,
-                  const unsigned int      i,
-                  const Point<2>         &p,
-                  const double            hx,
-                  const double            hy)
+    /// The two Gauss points of [0, 1] and the three points 0.5 -+
+    /// 0.5 sqrt(3/5), 0.5 (MITC9's tying coordinates).
+    const double gauss_a[2] = {0.5 - 0.5 / std::sqrt(3.),
+                               0.5 + 0.5 / std::sqrt(3.)};
+    const double gauss_b[3] = {0.5 - 0.5 * std::sqrt(0.6), 0.5,
+                               0.5 + 0.5 * std::sqrt(0.6)};
+
+    /// Lagrange polynomial k of the nodes x[0..n-1] at s.
+    double
+    lagrange(const double *x, const unsigned int n, const unsigned int k,
+             const double s)
     {
-      const Tensor<1, 2> d = fe.shape_grad(i, p);
-      Tensor<1, 2>       g;
-      g[0] = d[0] / hx;
-      g[1] = d[1] / hy;
-      return g;
+      double l = 1.;
+      for (unsigned int m = 0; m < n; ++m)
+        if (m != k)
+          l *= (s - x[m]) / (x[k] - x[m]);
+      return l;
     }
   } // namespace
+
+
+
+  MindlinModel::ShearTying::ShearTying(const FiniteElement<2> &fe,
+                                       const Shear             shear)
+    : shear(shear)
+  {
+    // MITC4 (Bathe and Dvorkin): e_xi tied at the midpoints (0.5, 0) and
+    // (0.5, 1) of the edges eta = 0, 1 and interpolated linearly in eta;
+    // e_eta likewise. MITC9 (Bucalem and Bathe): e_xi tied at (a_k, b_l),
+    // a_k the 2 Gauss points in xi and b_l the 3 points of gauss_b in eta,
+    // interpolated in P1(xi) x P2(eta); e_eta likewise with xi and eta
+    // swapped. 'full' ties nothing.
+    for (unsigned int b = 0; b < 2; ++b)
+      {
+        std::vector<Point<2>> &t = points[b];
+        if (shear == Shear::mitc4)
+          for (const double s : {0., 1.})
+            {
+              Point<2> p;
+              p[b]     = 0.5;
+              p[1 - b] = s;
+              t.push_back(p);
+            }
+        else if (shear == Shear::mitc9)
+          for (const double s : gauss_b)
+            for (const double a : gauss_a)
+              {
+                Point<2> p;
+                p[b]     = a;
+                p[1 - b] = s;
+                t.push_back(p);
+              }
+        for (const Point<2> &p : t)
+          {
+            values[b].emplace_back(fe.n_dofs_per_cell());
+            grads[b].emplace_back(fe.n_dofs_per_cell());
+            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+              {
+                values[b].back()[i] = fe.shape_value(i, p);
+                grads[b].back()[i]  = fe.shape_grad(i, p);
+              }
+          }
+      }
+  }
+
+
+
+  std::vector<double>
+  MindlinModel::ShearTying::weights(const unsigned int b,
+                                    const Point<2>    &p) const
+  {
+    if (shear == Shear::mitc4)
+      return {1. - p[1 - b], p[1 - b]};
+    std::vector<double> w;
+    for (unsigned int l = 0; l < 3; ++l)
+      for (unsigned int k = 0; k < 2; ++k)
+        w.push_back(lagrange(gauss_a, 2, k, p[b]) *
+                    lagrange(gauss_b, 3, l, p[1 - b]));
+    return w;
+  }
+
+
+
+  std::vector<Point<2>>
+  MindlinModel::ShearTying::all_points() const
+  {
+    std::vector<Point<2>> all = points[0];
+    all.insert(all.end(), points[1].begin(), points[1].end());
+    return all;
+  }
+
+
+
+  Tensor<1, 2>
+  MindlinModel::tied_shear_strain(
+    const ShearTying                     &tying,
+    const unsigned int                    component,
+    const unsigned int                    i,
+    const Point<2>                       &p,
+    const DerivativeForm<1, 2, 2>        &inverse_jacobian,
+    const std::vector<DerivativeForm<1, 2, 2>> &tying_jacobians)
+  {
+    // the covariant strain of the shape function at a tying point: d_b w
+    // for w, phi . dx/dxi_b for phi; interpolated, then gamma = J^{-T} e
+    Tensor<1, 2> e;
+    if (component > phi_component + 1)
+      return e;
+    unsigned int offset = 0;
+    for (unsigned int b = 0; b < 2; ++b)
+      {
+        const std::vector<double> w = tying.weights(b, p);
+        for (unsigned int t = 0; t < w.size(); ++t)
+          e[b] += w[t] *
+                  (component == w_component ?
+                     tying.grads[b][t][i][b] :
+                     tying.values[b][t][i] *
+                       tying_jacobians[offset + t][component - phi_component][b]);
+        offset += tying.points[b].size();
+      }
+    Tensor<1, 2> gamma;
+    for (unsigned int a = 0; a < 2; ++a)
+      for (unsigned int b = 0; b < 2; ++b)
+        gamma[a] += inverse_jacobian[b][a] * e[b];
+    return gamma;
+  }
 
 
 
@@ -38,119 +148,118 @@ namespace NitscheContact
                              const double            hy,
                              const Shear             shear)
   {
-    // gamma = grad w + phi. MITC4 on an axis-aligned rectangle (doc/theory.md
-    // 3.4): gamma_x is tied at the midpoints of the edges y = y0, y0 + hy and
-    // interpolated linearly in y, gamma_y likewise in x. For Q1 functions
-    // this is gamma_h,x(x, y) = d_x w(x, y) + phi_x(x_c, y) and gamma_h,y(x,
-    // y) = d_y w(x, y) + phi_y(x, y_c) with (x_c, y_c) the cell centre (d_x w
-    // of a Q1 function depends on y only and is reproduced exactly).
-    // MITC9 (Bucalem and Bathe 1993) on Q2: gamma_x is tied at the points
-    // (a_k, b_l), a_k the 2 Gauss points in x and b_l the 3 in y, and
-    // interpolated in P1(x) x P2(y); gamma_y likewise with x and y swapped.
-    // d_x w of a Q2 function lies in P1(x) x P2(y) and is reproduced
-    // exactly, and so is the y-dependence of phi_x (quadratic, through 3
-    // points): gamma_h,x(x, y) = d_x w(x, y) + sum_k L_k(x) phi_x(a_k, y),
-    // L_k the linear Lagrange polynomials of the two Gauss points.
     const unsigned int c = fe.system_to_component_index(i).first;
-    Tensor<1, 2>       g;
-    if (c == w_component)
+    if (shear == Shear::full)
       {
-        const Tensor<1, 2> d = fe.shape_grad(i, p);
-        g[0]                 = d[0] / hx;
-        g[1]                 = d[1] / hy;
-      }
-    else if (c == phi_component || c == phi_component + 1)
-      {
-        const unsigned int d = c - phi_component; // direction of gamma_d
-        switch (shear)
+        Tensor<1, 2> g;
+        if (c == w_component)
           {
-            case Shear::full:
-              g[d] = fe.shape_value(i, p);
-              break;
-            case Shear::mitc4:
-              {
-                Point<2> tied = p;
-                tied[d]       = 0.5;
-                g[d]          = fe.shape_value(i, tied);
-                break;
-              }
-            case Shear::mitc9:
-              {
-                const double a0 = 0.5 - 0.5 / std::sqrt(3.),
-                             a1 = 0.5 + 0.5 / std::sqrt(3.);
-                Point<2> t0 = p, t1 = p;
-                t0[d]       = a0;
-                t1[d]       = a1;
-                g[d] = ((a1 - p[d]) * fe.shape_value(i, t0) +
-                        (p[d] - a0) * fe.shape_value(i, t1)) /
-                       (a1 - a0);
-                break;
-              }
+            g[0] = fe.shape_grad(i, p)[0] / hx;
+            g[1] = fe.shape_grad(i, p)[1] / hy;
           }
+        else if (c == phi_component || c == phi_component + 1)
+          g[c - phi_component] = fe.shape_value(i, p);
+        return g;
       }
-    return g;
+    const ShearTying        tying(fe, shear);
+    DerivativeForm<1, 2, 2> jacobian, inverse;
+    jacobian[0][0] = hx;
+    jacobian[1][1] = hy;
+    inverse[0][0]  = 1. / hx;
+    inverse[1][1]  = 1. / hy;
+    return tied_shear_strain(
+      tying, c, i, p, inverse,
+      std::vector<DerivativeForm<1, 2, 2>>(tying.all_points().size(),
+                                           jacobian));
   }
 
 
 
-  void
-  MindlinModel::precompute_cell_data()
-  {
-    precompute_bulk_data();
-    precompute_contact_data();
-    compute_gaps();
-  }
+  MindlinModel::ElementScratch::ElementScratch(const MindlinModel &model)
+    : bulk(model.mapping, model.fe, model.bulk_quadrature,
+           update_values | update_gradients | update_JxW_values |
+             update_inverse_jacobians)
+    , contact(model.mapping, model.fe, model.contact_quadrature,
+              update_values | update_gradients | update_JxW_values |
+                update_inverse_jacobians)
+    , tying(model.mapping, model.fe,
+            Quadrature<2>(model.tying.shear == Shear::full ?
+                            std::vector<Point<2>>{Point<2>(0.5, 0.5)} :
+                            model.tying.all_points()),
+            update_jacobians)
+  {}
 
 
 
   void
-  MindlinModel::precompute_bulk_data()
+  MindlinModel::fill_element_data(
+    const DoFHandler<2>::active_cell_iterator &cell,
+    ElementScratch                            &scratch) const
   {
-    const unsigned int n  = fe.n_dofs_per_cell();
-    const double       nu = prm.poisson_ratio;
-    const double       E  = prm.youngs_modulus;
-    const double       t  = prm.thickness;
-    const double       D  = prm.bending_stiffness();
-    const double       S  = settings.shear_factor * mu * t;
-    const double       Dm = E * t / (1. - nu * nu);
+    ElementData       &d   = scratch.data;
+    const unsigned int n   = fe.n_dofs_per_cell();
+    const double       nu  = prm.poisson_ratio;
+    const double       E   = prm.youngs_modulus;
+    const double       t   = prm.thickness;
+    const double       D   = prm.bending_stiffness();
+    const double       S   = settings.shear_factor * mu * t;
+    const double       Dm  = E * t / (1. - nu * nu);
+    scratch.bulk.reinit(cell);
+    scratch.contact.reinit(cell);
+    scratch.tying.reinit(cell);
+    scratch.tying_jacobians.resize(scratch.tying.n_quadrature_points);
+    for (unsigned int k = 0; k < scratch.tying.n_quadrature_points; ++k)
+      scratch.tying_jacobians[k] = scratch.tying.jacobian(k);
+    // gamma of shape function i at point q of `values`
+    const auto shear = [&](const FEValues<2> &values, const unsigned int i,
+                           const unsigned int q) {
+      const unsigned int c = fe.system_to_component_index(i).first;
+      Tensor<1, 2>       g;
+      if (settings.shear != Shear::full)
+        return tied_shear_strain(tying, c, i,
+                                 values.get_quadrature().point(q),
+                                 values.inverse_jacobian(q),
+                                 scratch.tying_jacobians);
+      if (c == w_component)
+        g = values.shape_grad(i, q);
+      else if (c == phi_component || c == phi_component + 1)
+        g[c - phi_component] = values.shape_value(i, q);
+      return g;
+    };
 
-    // Bulk stiffness of one cell, (p+1)x(p+1) Gauss for Q_p (exact for
-    // bending, membrane and the MITC4/MITC9 shear on rectangles).
-    const QGauss<2> q2(fe.degree + 1);
-    bulk_cell_matrix.reinit(n, n);
-    bulk_curvature.assign(q2.size(), std::vector<SymmetricTensor<2, 2>>(n));
-    bulk_membrane.assign(q2.size(), std::vector<SymmetricTensor<2, 2>>(n));
-    bulk_shear.assign(q2.size(), std::vector<Tensor<1, 2>>(n));
-    bulk_JxW.assign(q2.size(), 0.);
-    for (unsigned int q = 0; q < q2.size(); ++q)
+    // Bulk stiffness, (p+1)x(p+1) Gauss for Q_p (exact for bending,
+    // membrane and the MITC shear on rectangles).
+    const unsigned int nb = bulk_quadrature.size();
+    d.bulk_matrix.reinit(n, n);
+    d.bulk_curvature.assign(nb, std::vector<SymmetricTensor<2, 2>>(n));
+    d.bulk_membrane.assign(nb, std::vector<SymmetricTensor<2, 2>>(n));
+    d.bulk_shear.assign(nb, std::vector<Tensor<1, 2>>(n));
+    d.bulk_JxW.assign(nb, 0.);
+    for (unsigned int q = 0; q < nb; ++q)
       {
-        std::vector<SymmetricTensor<2, 2>> &curvature = bulk_curvature[q],
-                                           &strain    = bulk_membrane[q];
-        std::vector<Tensor<1, 2>>          &gamma     = bulk_shear[q];
-        bulk_JxW[q] = q2.weight(q) * hx * hy;
-        const Point<2> &p   = q2.point(q);
-        const double    JxW = q2.weight(q) * hx * hy;
+        auto &curvature = d.bulk_curvature[q], &strain = d.bulk_membrane[q];
+        auto &gamma     = d.bulk_shear[q];
+        const double JxW = d.bulk_JxW[q] = scratch.bulk.JxW(q);
         for (unsigned int i = 0; i < n; ++i)
           {
-            curvature[i] = strain[i] = SymmetricTensor<2, 2>();
-            const unsigned int c     = fe.system_to_component_index(i).first;
-            const Tensor<1, 2> g     = physical_grad(fe, i, p, hx, hy);
+            const unsigned int c = fe.system_to_component_index(i).first;
+            const Tensor<1, 2> g = scratch.bulk.shape_grad(i, q);
             // sym grad of the vector (phi_x, phi_y) or (u_x, u_y) whose
-            // component d is the shape function: sym(e_d (x) g)
+            // component k is the shape function: sym(e_k (x) g)
             SymmetricTensor<2, 2> s;
-            const unsigned int    d = (c == phi_component ||
-                                    c == ubar_component) ? 0 : 1;
-            s[d][d] = g[d];
-            s[0][1] = 0.5 * g[1 - d];
+            const unsigned int    k =
+              (c == phi_component || c == ubar_component) ? 0 : 1;
+            s[k][k] = g[k];
+            s[0][1] = 0.5 * g[1 - k];
             if (c == phi_component || c == phi_component + 1)
               curvature[i] = s;
             else if (c != w_component)
               strain[i] = s;
-            gamma[i] = shear_strain(fe, i, p, hx, hy, settings.shear);
+            gamma[i] = shear(scratch.bulk, i, q);
           }
         for (unsigned int i = 0; i < n; ++i)
           for (unsigned int j = 0; j < n; ++j)
-            bulk_cell_matrix(i, j) +=
+            d.bulk_matrix(i, j) +=
               (D * ((1. - nu) * (curvature[i] * curvature[j]) +
                     nu * trace(curvature[i]) * trace(curvature[j])) +
                S * (gamma[i] * gamma[j]) +
@@ -158,70 +267,88 @@ namespace NitscheContact
                      nu * trace(strain[i]) * trace(strain[j]))) *
               JxW;
       }
-  }
 
-
-
-  void
-  MindlinModel::precompute_contact_data()
-  {
     // Linearised bottom-face quantities (doc/theory.md 3.3) of every shape
     // function at every contact point: u_n = -w, sigma_n = lambda (div ubar
     // - eps div phi), u_t = ubar - eps phi, sigma_t = -mu gamma_h.
-    const unsigned int n  = fe.n_dofs_per_cell();
     const unsigned int nq = contact_quadrature.size();
-    contact_JxW.resize(nq);
-    contact_shapes.assign(nq, std::vector<ShapeContactData>(n));
-    shape_values.assign(nq, std::vector<double>(n));
-    shape_grads.assign(nq, std::vector<Tensor<1, 2>>(n));
-    theta_matrices.assign(nq, FullMatrix<double>(n, n));
-    constant_cell_matrix = bulk_cell_matrix;
+    d.contact_JxW.resize(nq);
+    d.contact_shapes.assign(nq, std::vector<ShapeContactData>(n));
+    d.theta_matrices.assign(nq, FullMatrix<double>(n, n));
+    d.constant_matrix   = d.bulk_matrix;
     const double t_over_r = prm.theta / r;
     for (unsigned int q = 0; q < nq; ++q)
       {
-        const Point<2> &p = contact_quadrature.point(q);
-        contact_JxW[q]    = contact_quadrature.weight(q) * hx * hy;
+        d.contact_JxW[q] = scratch.contact.JxW(q);
         for (unsigned int i = 0; i < n; ++i)
           {
             const unsigned int c   = fe.system_to_component_index(i).first;
-            const double       val = fe.shape_value(i, p);
-            const Tensor<1, 2> g   = physical_grad(fe, i, p, hx, hy);
-            shape_values[q][i]     = val;
-            shape_grads[q][i]      = g;
-            ShapeContactData &s    = contact_shapes[q][i];
+            const double       val = scratch.contact.shape_value(i, q);
+            const Tensor<1, 2> g   = scratch.contact.shape_grad(i, q);
+            ShapeContactData  &s   = d.contact_shapes[q][i];
+            s                      = ShapeContactData();
             if (c == w_component)
               s.u_n = -val;
             else if (c == phi_component || c == phi_component + 1)
               {
-                const unsigned int d = c - phi_component;
-                s.sigma_n            = -lambda * eps * g[d];
-                s.u_t[d]             = -eps * val;
+                const unsigned int k = c - phi_component;
+                s.sigma_n            = -lambda * eps * g[k];
+                s.u_t[k]             = -eps * val;
               }
             else
               {
-                const unsigned int d = c - ubar_component;
-                s.sigma_n            = lambda * g[d];
-                s.u_t[d]             = val;
+                const unsigned int k = c - ubar_component;
+                s.sigma_n            = lambda * g[k];
+                s.u_t[k]             = val;
               }
-            const Tensor<1, 2> gam =
-              shear_strain(fe, i, p, hx, hy, settings.shear);
-            s.sigma_t[0] = -mu * gam[0];
-            s.sigma_t[1] = -mu * gam[1];
+            const Tensor<1, 2> gam = shear(scratch.contact, i, q);
+            s.sigma_t[0]           = -mu * gam[0];
+            s.sigma_t[1]           = -mu * gam[1];
           }
         // The linear theta-terms that the kernel adds at every point:
         // -(theta/r) (sigma_n(u) sigma_n(v) [+ sigma_t(u).sigma_t(v)]).
         for (unsigned int i = 0; i < n; ++i)
           for (unsigned int j = 0; j < n; ++j)
             {
-              const ShapeContactData &si = contact_shapes[q][i],
-                                     &sj = contact_shapes[q][j];
+              const ShapeContactData &si = d.contact_shapes[q][i],
+                                     &sj = d.contact_shapes[q][j];
               double v = si.sigma_n * sj.sigma_n;
               if (friction > 0.)
                 v += si.sigma_t * sj.sigma_t;
-              theta_matrices[q](i, j) = -t_over_r * v * contact_JxW[q];
+              d.theta_matrices[q](i, j) = -t_over_r * v * d.contact_JxW[q];
             }
-        constant_cell_matrix.add(1., theta_matrices[q]);
+        d.constant_matrix.add(1., d.theta_matrices[q]);
       }
+  }
+
+
+
+  const MindlinModel::ElementData &
+  MindlinModel::element_data(const std::size_t c, ElementScratch &scratch) const
+  {
+    if (uniform_cells)
+      return uniform_data;
+    fill_element_data(cell_grid[c], scratch);
+    return scratch.data;
+  }
+
+
+
+  void
+  MindlinModel::precompute_cell_data()
+  {
+    const unsigned int nq = contact_quadrature.size();
+    shape_values.assign(nq, std::vector<double>(fe.n_dofs_per_cell()));
+    for (unsigned int q = 0; q < nq; ++q)
+      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+        shape_values[q][i] = fe.shape_value(i, contact_quadrature.point(q));
+    if (uniform_cells)
+      {
+        ElementScratch scratch(*this);
+        fill_element_data(cell_grid[0], scratch);
+        uniform_data = std::move(scratch.data);
+      }
+    compute_gaps();
   }
 
 
@@ -237,13 +364,14 @@ namespace NitscheContact
     const double  shift       = prm.obstacle_level_is_midplane ? 0. : eps;
     unsigned long bad_heights = 0;
     Point<2>      bad_point;
+    FEValues<2>   points(mapping, fe, contact_quadrature,
+                       update_quadrature_points);
     for (unsigned int c = 0; c < cell_grid.size(); ++c)
       {
-        const Point<2> v0 = cell_grid[c]->vertex(0);
+        points.reinit(cell_grid[c]);
         for (unsigned int q = 0; q < nq; ++q)
           {
-            const Point<2> &p = contact_quadrature.point(q);
-            const Point<2>  x(v0[0] + p[0] * hx, v0[1] + p[1] * hy);
+            const Point<2> &x = points.quadrature_point(q);
             gaps[static_cast<std::size_t>(c) * nq + q] =
               -shift - obstacle.height(x);
             if (!std::isfinite(gaps[static_cast<std::size_t>(c) * nq + q]) &&
@@ -258,14 +386,15 @@ namespace NitscheContact
 
 
   PointInput
-  MindlinModel::point_input(const Vector<double> &u,
+  MindlinModel::point_input(const ElementData    &d,
+                            const Vector<double> &u,
                             const unsigned int    q,
                             const double          gap) const
   {
     PointInput in;
     for (unsigned int i = 0; i < u.size(); ++i)
       {
-        const ShapeContactData &s = contact_shapes[q][i];
+        const ShapeContactData &s = d.contact_shapes[q][i];
         in.u_n += u(i) * s.u_n;
         in.sigma_n += u(i) * s.sigma_n;
         in.slip += u(i) * s.u_t;

@@ -344,7 +344,7 @@ namespace NitscheContact
   MindlinModel::setup_multigrid_matrices()
   {
     // The MITC4 Newton matrix is the sum over the cells of
-    // constant_cell_matrix and, at each active contact point q, of the
+    // uniform_data.constant_matrix and, at each active contact point q, of the
     // kernel's active Jacobian minus the theta-term already in the
     // constant part (frictionless: the same matrix at every active point).
     const unsigned int n  = fe.n_dofs_per_cell();
@@ -367,7 +367,7 @@ namespace NitscheContact
     };
     FullMatrix<double> cell_matrix(16, 16);
     for (unsigned int pos = 0; pos < 4; ++pos)
-      restrict_to_parent(constant_cell_matrix, pos, cell_matrix);
+      restrict_to_parent(uniform_data.constant_matrix, pos, cell_matrix);
     std::vector<FullMatrix<double>> point_matrices(4 * nq,
                                                    FullMatrix<double>(16, 16));
     std::vector<FullMatrix<double>> active_minus_theta(nq);
@@ -375,9 +375,9 @@ namespace NitscheContact
       {
         FullMatrix<double> &m = active_minus_theta[q];
         m.reinit(n, n);
-        add_point_contribution(in, active, contact_shapes[q], contact_JxW[q],
+        add_point_contribution(in, active, uniform_data.contact_shapes[q], uniform_data.contact_JxW[q],
                                &m, dummy);
-        m.add(-1., theta_matrices[q]);
+        m.add(-1., uniform_data.theta_matrices[q]);
         for (unsigned int pos = 0; pos < 4; ++pos)
           restrict_to_parent(m, pos, point_matrices[pos * nq + q]);
       }
@@ -397,7 +397,7 @@ namespace NitscheContact
           e(local[a], local[b]) = m(a, b);
       return e;
     };
-    FullMatrix<double> top_cell = embed(constant_cell_matrix);
+    FullMatrix<double> top_cell = embed(uniform_data.constant_matrix);
     for (unsigned int v = 0; v < 4; ++v)
       top_cell(4 * v + 3, 4 * v + 3) = 1.;
     std::vector<FullMatrix<double>> top_points;

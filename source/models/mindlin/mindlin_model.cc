@@ -29,10 +29,6 @@ namespace NitscheContact
     // the 3D model's predictor, whose input the 3D model checks): a plate
     // cell refines into 4, the Nitsche parameter is gamma0 E / t, and a
     // compliant obstacle may lie above a supported edge
-    require_shape(common.geometry, cartesian_shapes, "the model 'mindlin'",
-                  "its elements are precomputed on a uniform grid of "
-                  "axis-parallel rectangles; the membrane model solves every "
-                  "shape");
     if (settings.multigrid)
       require_shape(common.geometry, {PlateShape::rectangle},
                     "'Mindlin/Linear solver/Type = multigrid'",
@@ -59,11 +55,14 @@ namespace NitscheContact
     , r(0.)
     , fe(FE_Q<2>(settings.shear == Shear::mitc9 ? 2 : 1),
          settings.membrane ? 5 : 3)
+    , mapping(fe.degree)
+    , tying(fe, settings.shear)
     , dof_handler(triangulation)
     , contact_quadrature(
         contact_rule(settings.contact_rule,
                      settings.contact_quadrature,
                      "Mindlin/Contact quadrature points"))
+    , bulk_quadrature(QGauss<2>(fe.degree + 1))
     , direct_solver(ReusedFactorization::Settings{
         settings.multigrid ? std::string("Amesos_Mumps") :
                              settings.linear_solver,
@@ -178,36 +177,26 @@ namespace NitscheContact
     dof_handler.distribute_dofs(fe);
     direct_solver.clear();
 
-    // The mesh is uniform and Cartesian: find the cell size and index the
-    // cells by their (i, j) position. The precomputed cell data below rely
-    // on every cell being the hx x hy rectangle [v0, v0 + (hx, hy)] with the
-    // reference orientation, which is checked here.
-    const unsigned int factor = 1u << (triangulation.n_levels() - 1);
-    nx                        = prm.subdivisions[0] * factor;
-    ny                        = prm.subdivisions[1] * factor;
-    hx = prm.length_x / nx;
-    hy = prm.length_y / ny;
-    std::vector<DoFHandler<2>::active_cell_iterator> grid(
-      static_cast<std::size_t>(nx) * ny);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        const Point<2> v0 = cell->vertex(0), v3 = cell->vertex(3);
-        AssertThrow(std::abs(v3[0] - v0[0] - hx) < 1e-10 * hx &&
-                      std::abs(v3[1] - v0[1] - hy) < 1e-10 * hy,
-                    ExcMessage("Mindlin model: the mesh is not the uniform "
-                               "Cartesian mesh it expects"));
-        const unsigned int i = static_cast<unsigned int>(v0[0] / hx + 0.5);
-        const unsigned int j = static_cast<unsigned int>(v0[1] / hy + 0.5);
-        grid[static_cast<std::size_t>(j) * nx + i] = cell;
-      }
+    // On the Cartesian shapes the mesh is a uniform grid: find the cell
+    // size and index the cells by their (i, j) position. The shared
+    // element data rely on every cell being the hx x hy rectangle [v0, v0
+    // + (hx, hy)] with the reference orientation, which is checked here.
+    uniform_cells = is_cartesian(prm.geometry.shape);
     cell_grid.clear();
-    cell_at.assign(grid.size(), UniformPlateGrid::no_cell);
-    for (std::size_t k = 0; k < grid.size(); ++k)
-      if (grid[k].state() == IteratorState::valid)
-        {
-          cell_at[k] = cell_grid.size();
-          cell_grid.push_back(grid[k]);
-        }
+    cell_at.clear();
+    cell_size = 0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (unsigned int l = 0; l < GeometryInfo<2>::lines_per_cell; ++l)
+        cell_size = std::max(cell_size, cell->line(l)->diameter());
+    if (!uniform_cells)
+      {
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          cell_grid.push_back(cell);
+        point_cache = std::make_unique<GridTools::Cache<2>>(triangulation,
+                                                            mapping);
+      }
+    else
+      index_uniform_grid();
     make_constraints();
 
 
@@ -232,7 +221,7 @@ namespace NitscheContact
 
     const double h_n = settings.nitsche_length_is_thickness ?
                          prm.thickness :
-                         std::max(hx, hy);
+                         cell_size;
     r = prm.gamma0 * prm.youngs_modulus / h_n;
     kappa = prm.obstacle_compliance_for(std::pow(prm.regularisation_length(), 4) /
                                    prm.bending_stiffness());
@@ -252,50 +241,82 @@ namespace NitscheContact
 
 
   void
+  MindlinModel::index_uniform_grid()
+  {
+    const unsigned int factor = 1u << (triangulation.n_levels() - 1);
+    nx                        = prm.subdivisions[0] * factor;
+    ny                        = prm.subdivisions[1] * factor;
+    hx = prm.length_x / nx;
+    hy = prm.length_y / ny;
+    std::vector<DoFHandler<2>::active_cell_iterator> grid(
+      static_cast<std::size_t>(nx) * ny);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        const Point<2> v0 = cell->vertex(0), v3 = cell->vertex(3);
+        AssertThrow(std::abs(v3[0] - v0[0] - hx) < 1e-10 * hx &&
+                      std::abs(v3[1] - v0[1] - hy) < 1e-10 * hy,
+                    ExcMessage("Mindlin model: the mesh is not the uniform "
+                               "Cartesian mesh it expects"));
+        const unsigned int i = static_cast<unsigned int>(v0[0] / hx + 0.5);
+        const unsigned int j = static_cast<unsigned int>(v0[1] / hy + 0.5);
+        grid[static_cast<std::size_t>(j) * nx + i] = cell;
+      }
+    cell_at.assign(grid.size(), UniformPlateGrid::no_cell);
+    for (std::size_t k = 0; k < grid.size(); ++k)
+      if (grid[k].state() == IteratorState::valid)
+        {
+          cell_at[k] = cell_grid.size();
+          cell_grid.push_back(grid[k]);
+        }
+  }
+
+
+
+  void
   MindlinModel::make_constraints()
   {
     // Boundary conditions (doc/theory.md 3.4): clamped: everything zero; hard
-    // simple support: w and the tangential rotation zero (soft: w only),
-    // membrane fixed; symmetry: normal rotation and normal membrane
-    // displacement zero; free: natural. Zero values of nodal elements: the
-    // components of the mask vanish at the DoFs of each boundary face; the
-    // normal of a face f of a cell in reference orientation is e_{f/2}.
+    // simple support: w and the tangential rotation phi . t zero (soft: w
+    // only), membrane fixed; symmetry: the normal rotation phi . n and the
+    // normal membrane displacement zero; free: natural. deal.II's
+    // normal-flux constraints take the normal of each boundary vertex from
+    // its faces (both components at a corner); a DoF already constrained
+    // keeps its constraint, so clamped edges come first.
     constraints.clear();
     const unsigned int n_comp = fe.n_components();
-    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
-    for (const auto &cell : cell_grid)
-      for (const unsigned int f : cell->face_indices())
-        if (cell->at_boundary(f))
-          {
-            const unsigned int normal     = f / 2;
-            const unsigned int tangential = 1 - normal;
-            std::vector<bool>  mask(n_comp, false);
-            switch (prm.boundary_condition(cell->face(f)->boundary_id()))
-              {
-                case EdgeCondition::clamped:
-                  std::fill(mask.begin(), mask.end(), true);
-                  break;
-                case EdgeCondition::simply_supported:
-                  mask[w_component] = true;
-                  if (!settings.soft_support)
-                    mask[phi_component + tangential] = true;
-                  if (settings.membrane)
-                    mask[ubar_component] = mask[ubar_component + 1] = true;
-                  break;
-                case EdgeCondition::symmetry:
-                  mask[phi_component + normal] = true;
-                  if (settings.membrane)
-                    mask[ubar_component + normal] = true;
-                  break;
-                case EdgeCondition::free:
-                  break;
-              }
-            cell->face(f)->get_dof_indices(face_dofs);
-            for (unsigned int i = 0; i < face_dofs.size(); ++i)
-              if (mask[fe.face_system_to_component_index(i).first] &&
-                  !constraints.is_constrained(face_dofs[i]))
-                constraints.add_line(face_dofs[i]);
-          }
+    std::set<types::boundary_id> tangential_rotation, normal_rotation;
+    for (const EdgeCondition condition :
+         {EdgeCondition::clamped, EdgeCondition::simply_supported,
+          EdgeCondition::symmetry})
+      for (const types::boundary_id id : prm.geometry.boundary_ids)
+        {
+          if (prm.boundary_condition(id) != condition)
+            continue;
+          std::vector<bool> mask(n_comp, false);
+          if (condition == EdgeCondition::clamped)
+            std::fill(mask.begin(), mask.end(), true);
+          else if (condition == EdgeCondition::simply_supported)
+            {
+              mask[w_component] = true;
+              if (settings.membrane)
+                mask[ubar_component] = mask[ubar_component + 1] = true;
+              if (!settings.soft_support)
+                tangential_rotation.insert(id);
+            }
+          else
+            normal_rotation.insert(id);
+          if (condition != EdgeCondition::symmetry)
+            DoFTools::make_zero_boundary_constraints(dof_handler, id,
+                                                     constraints,
+                                                     ComponentMask(mask));
+        }
+    VectorTools::compute_normal_flux_constraints(
+      dof_handler, phi_component, tangential_rotation, constraints, mapping);
+    VectorTools::compute_no_normal_flux_constraints(
+      dof_handler, phi_component, normal_rotation, constraints, mapping);
+    if (settings.membrane)
+      VectorTools::compute_no_normal_flux_constraints(
+        dof_handler, ubar_component, normal_rotation, constraints, mapping);
     constraints.close();
   }
 
@@ -366,7 +387,7 @@ namespace NitscheContact
   double
   MindlinModel::mesh_size() const
   {
-    return std::max(hx, hy);
+    return cell_size;
   }
 
 
@@ -387,12 +408,13 @@ namespace NitscheContact
     std::vector<types::global_dof_index> dofs(n);
     Vector<double> u(n);
     double         sum = 0.;
-    for (const auto &cell : cell_grid)
+    ElementScratch scratch(*this);
+    for (std::size_t c = 0; c < cell_grid.size(); ++c)
       {
-        cell->get_dof_indices(dofs);
+        cell_grid[c]->get_dof_indices(dofs);
         for (unsigned int i = 0; i < n; ++i)
           u(i) = v(dofs[i]);
-        sum += bulk_cell_matrix.matrix_norm_square(u);
+        sum += element_data(c, scratch).bulk_matrix.matrix_norm_square(u);
       }
     return std::sqrt(std::max(sum, 0.));
   }

@@ -38,7 +38,7 @@ namespace NitscheContact
     data_out.add_data_vector(pressure, "contact_pressure");
     data_out.add_data_vector(in_contact, "contact_fraction");
     data_out.add_data_vector(slipping, "slip_fraction");
-    data_out.build_patches(fe.degree);
+    data_out.build_patches(mapping, fe.degree);
     const std::string record = data_out.write_vtu_with_pvtu_record(
       directory + "/", "solution", cycle, comm, 2);
     return {{"solution", record}};

@@ -38,6 +38,7 @@ namespace NitscheContact
       }
     res.probes = deflection_at(probes);
     res.extra.emplace_back("nitsche_r", r);
+    res.extra.emplace_back("load_total", load_factor * load_integral);
     res.extra.emplace_back("relative_residual", relative_residual);
     direct_solver.report_inertia(res.extra);
     res.extra.emplace_back("max_bottom_inplane_displacement", s.max_slip);
@@ -73,12 +74,13 @@ namespace NitscheContact
     std::vector<types::global_dof_index> dofs(n);
     Vector<double>                       u(n);
     Vector<double> internal(solution.size()), cell_force(n);
-    for (const auto &cell : cell_grid)
+    ElementScratch scratch(*this);
+    for (std::size_t c = 0; c < cell_grid.size(); ++c)
       {
-        cell->get_dof_indices(dofs);
+        cell_grid[c]->get_dof_indices(dofs);
         for (unsigned int i = 0; i < n; ++i)
           u(i) = solution(dofs[i]);
-        bulk_cell_matrix.vmult(cell_force, u);
+        element_data(c, scratch).bulk_matrix.vmult(cell_force, u);
         for (unsigned int i = 0; i < n; ++i)
           internal(dofs[i]) += cell_force(i);
       }
@@ -122,19 +124,21 @@ namespace NitscheContact
     Vector<double>                       u(n);
     ContactStatistics                    s;
     ContactTotals                        totals;
+    ElementScratch                       scratch(*this);
     for (unsigned int c = 0; c < cell_grid.size(); ++c)
       {
-        const auto &cell = cell_grid[c];
+        const auto        &cell = cell_grid[c];
+        const ElementData &d    = element_data(c, scratch);
         cell->get_dof_indices(dofs);
         for (unsigned int i = 0; i < n; ++i)
           u(i) = solution(dofs[i]);
         for (unsigned int q = 0; q < nq; ++q)
           {
             const std::size_t k  = static_cast<std::size_t>(c) * nq + q;
-            const PointInput  in = point_input(u, q, gaps[k]);
+            const PointInput  in = point_input(d, u, q, gaps[k]);
             const PointState  st =
               evaluate_contact_point(in, NonlinearScheme::newton);
-            const double JxW = contact_JxW[q];
+            const double JxW = d.contact_JxW[q];
             s.max_slip         = std::max(s.max_slip, in.slip.norm());
             if (settings.membrane)
               {
@@ -192,7 +196,7 @@ namespace NitscheContact
     double err_w_l2 = 0., err_w_h1 = 0., err_phi_l2 = 0., err_phi_h1 = 0.;
     Vector<double>            exact_value(3);
     std::vector<Tensor<1, 2>> exact_grad(3);
-    FEValues<2> fev(fe, QGauss<2>(4),
+    FEValues<2> fev(mapping, fe, QGauss<2>(4),
                     update_values | update_gradients |
                       update_quadrature_points | update_JxW_values);
     for (const auto &cell : cell_grid)
@@ -248,13 +252,15 @@ namespace NitscheContact
     cell_grid[c]->get_dof_indices(dofs);
     for (unsigned int i = 0; i < n; ++i)
       u(i) = solution(dofs[i]);
-    CellContactMeans means;
+    ElementScratch     scratch(*this);
+    const ElementData &d = element_data(c, scratch);
+    CellContactMeans   means;
     for (unsigned int q = 0; q < nq; ++q)
       {
         const PointInput in =
-          point_input(u, q, gaps[static_cast<std::size_t>(c) * nq + q]);
+          point_input(d, u, q, gaps[static_cast<std::size_t>(c) * nq + q]);
         means.add(in, evaluate_contact_point(in, NonlinearScheme::newton),
-                  contact_JxW[q]);
+                  d.contact_JxW[q]);
       }
     return means;
   }
@@ -266,10 +272,13 @@ namespace NitscheContact
   {
     std::vector<double> p(points.size(),
                           std::numeric_limits<double>::quiet_NaN());
-    const UniformPlateGrid grid(nx, ny, prm.length_x, prm.length_y, &cell_at);
     for (unsigned int k = 0; k < points.size(); ++k)
-      if (const auto where = grid.locate(points[k]))
-        p[k] = cell_contact_means(where->cell).pressure();
+      {
+        Point<2>   unit;
+        const auto cell = locate(points[k], unit);
+        if (cell != dof_handler.end())
+          p[k] = cell_contact_means(cell_index(cell)).pressure();
+      }
     return p;
   }
 
@@ -278,12 +287,38 @@ namespace NitscheContact
   DoFHandler<2>::active_cell_iterator
   MindlinModel::locate(const Point<2> &p, Point<2> &unit_point) const
   {
+    if (!uniform_cells)
+      {
+        const auto [cell, unit] =
+          locate_on_plate(*point_cache, prm.geometry, p);
+        if (cell == triangulation.end())
+          return dof_handler.end();
+        unit_point = unit;
+        return DoFHandler<2>::active_cell_iterator(&triangulation,
+                                                   cell->level(),
+                                                   cell->index(),
+                                                   &dof_handler);
+      }
     const auto where =
       UniformPlateGrid(nx, ny, prm.length_x, prm.length_y, &cell_at).locate(p);
     if (!where)
       return dof_handler.end();
     unit_point = where->unit;
     return cell_grid[where->cell];
+  }
+
+
+
+  std::size_t
+  MindlinModel::cell_index(const DoFHandler<2>::active_cell_iterator &cell) const
+  {
+    // cell_grid holds every active cell, on a uniform grid in grid order
+    if (!uniform_cells)
+      return cell->active_cell_index();
+    const auto where = UniformPlateGrid(nx, ny, prm.length_x, prm.length_y,
+                                        &cell_at)
+                         .locate(cell->center());
+    return where->cell;
   }
 
 
@@ -330,6 +365,8 @@ namespace NitscheContact
       const auto cell = locate(p, unit);
       if (cell == dof_handler.end())
         return false;
+      AssertThrow(uniform_cells,
+                  ExcMessage("plate_kinematics_at needs a uniform grid"));
       cell->get_dof_indices(dofs);
       v = {{0., 0., 0., 0.}};
       for (unsigned int i = 0; i < n; ++i)
@@ -386,24 +423,26 @@ namespace NitscheContact
     std::vector<types::global_dof_index> dofs(n);
     Vector<double>                       u(n);
     std::vector<ContactPointRecord>      points;
+    ElementScratch                       scratch(*this);
+    FEValues<2> positions(mapping, fe, contact_quadrature,
+                          update_quadrature_points);
     for (unsigned int c = 0; c < cell_grid.size(); ++c)
       {
-        const auto &cell = cell_grid[c];
+        const auto        &cell = cell_grid[c];
+        const ElementData &d    = element_data(c, scratch);
         cell->get_dof_indices(dofs);
         for (unsigned int i = 0; i < n; ++i)
           u(i) = solution(dofs[i]);
-        // axis-parallel rectangle: x = v0 + xi (v3 - v0)
-        const Point<2> v0 = cell->vertex(0), v3 = cell->vertex(3),
-                       centre = cell->center();
+        positions.reinit(cell);
+        const Point<2> centre = cell->center();
         for (unsigned int q = 0; q < nq; ++q)
           {
-            const Point<2>  &xi = contact_quadrature.point(q);
+            const Point<2>  &x = positions.quadrature_point(q);
             const PointInput in =
-              point_input(u, q, gaps[static_cast<std::size_t>(c) * nq + q]);
+              point_input(d, u, q, gaps[static_cast<std::size_t>(c) * nq + q]);
             points.push_back(make_contact_point_record(
               in, evaluate_contact_point(in, NonlinearScheme::newton),
-              v0[0] + xi[0] * (v3[0] - v0[0]), v0[1] + xi[1] * (v3[1] - v0[1]),
-              centre[0], centre[1], contact_JxW[q]));
+              x[0], x[1], centre[0], centre[1], d.contact_JxW[q]));
           }
       }
     return points;

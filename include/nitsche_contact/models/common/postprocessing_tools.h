@@ -6,6 +6,8 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
+#include <deal.II/grid/grid_tools_cache.h>
+#include <deal.II/grid/tria.h>
 
 #include <nitsche_contact/contact_records.h>
 #include <nitsche_contact/nitsche_kernel.h>
@@ -13,6 +15,7 @@
 
 #include <limits>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace NitscheContact
@@ -53,6 +56,19 @@ namespace NitscheContact
     double                           length_x = 1., length_y = 1.;
     const std::vector<unsigned int> *cell_at;
   };
+
+  class PlateGeometry;
+
+  /// The active cell of the cache's mesh that holds p, and p's unit
+  /// coordinates in it, searched from `hint` with the cache's mapping; a
+  /// point of the plate between the mapped outline and a curved edge is
+  /// taken to the nearest cell. The end iterator for a point off the plate.
+  std::pair<dealii::Triangulation<2>::active_cell_iterator, dealii::Point<2>>
+  locate_on_plate(const dealii::GridTools::Cache<2> &cache,
+                  const PlateGeometry               &geometry,
+                  const dealii::Point<2>            &p,
+                  const dealii::Triangulation<2>::active_cell_iterator &hint =
+                    dealii::Triangulation<2>::active_cell_iterator());
 
   /// The means over the contact points of one cell that the plate models
   /// write as cell data: the contact pressure, the fractions of the cell in

@@ -30,7 +30,6 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q.h>
-#include <deal.II/grid/grid_tools_cache.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -225,15 +224,6 @@ namespace NitscheContact
     CellContactMeans
     cell_contact_means(const dealii::DoFHandler<2>::active_cell_iterator &cell,
                        dealii::FEValues<2> &contact) const;
-
-    /// The cell holding p and p's unit coordinates in it, searched from
-    /// `hint`; a point of the plate just outside the polygonal outline of
-    /// the mapped cells (on a curved edge) is taken to the nearest cell.
-    /// Returns the end iterator for a point off the plate.
-    std::pair<dealii::Triangulation<2>::active_cell_iterator, dealii::Point<2>>
-    locate(const dealii::GridTools::Cache<2>                   &cache,
-           const dealii::Point<2>                               &p,
-           const dealii::Triangulation<2>::active_cell_iterator &hint) const;
 
     /// L2 and H1 errors against 'Reference solution/Exact solution'.
     void

@@ -8,8 +8,8 @@
 //
 // The unknowns are the deflection w, the rotations phi = (phi_x, phi_y)
 // (Kirchhoff limit phi = -grad w) and, when friction is on, the membrane
-// displacements ubar = (u_x, u_y); all are continuous Q1 on a uniform
-// Cartesian mesh of the mid-plane [0,Lx]x[0,Ly].
+// displacements ubar = (u_x, u_y); all are continuous Q1 (MITC9: Q2) on a
+// quadrilateral mesh of the mid-plane.
 //
 // The implementation, in source/models/mindlin/: mindlin_model.cc (set-up,
 // mesh, cycles), parameters.cc, elements.cc (the MITC shear and the cell
@@ -23,6 +23,9 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/grid/grid_tools_cache.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
@@ -44,11 +47,14 @@ namespace NitscheContact
   /**
    * The Reissner-Mindlin plate model.
    *
-   * Everything the nonlinear solver needs per iteration is cell-independent
-   * on the uniform Cartesian meshes this model uses: the local bulk
-   * stiffness (bending + MITC4 shear + membrane), and the linearised contact
-   * quantities (u_n, sigma_n, u_t, sigma_t) of every local shape function at
-   * every contact quadrature point. They are computed once per cycle; an
+   * Everything the nonlinear solver needs of a cell per iteration is its
+   * element data (ElementData): the local bulk stiffness (bending + MITC
+   * shear + membrane), and the linearised contact quantities (u_n, sigma_n,
+   * u_t, sigma_t) of every local shape function at every contact
+   * quadrature point. On the uniform grids of the Cartesian shapes every
+   * cell is the same rectangle and one ElementData, computed once per
+   * cycle, serves all cells; on other meshes (the disk, the annulus, mesh
+   * files) it is computed per cell when the cell is assembled. An
    * iteration then only evaluates the pointwise Nitsche kernel with the
    * current cell values. The linear theta-terms of the kernel (which act on
    * the whole plate, also where there is no contact) are part of a constant
@@ -244,7 +250,8 @@ namespace NitscheContact
 
     /// The assumed (MITC4, MITC9) or plain transverse shear strain gamma =
     /// grad w + phi of a shape function, at a point of the unit cell, on an
-    /// axis-aligned hx x hy rectangle. Public so that a unit test can check the
+    /// axis-aligned hx x hy rectangle (the covariant tying of ShearTying
+    /// with a constant Jacobian). Public so that a unit test can check the
     /// element directly.
     static dealii::Tensor<1, 2>
     shear_strain(const dealii::FiniteElement<2> &fe,
@@ -253,6 +260,43 @@ namespace NitscheContact
                  double                          hx,
                  double                          hy,
                  Shear                           shear);
+
+    /// The tying of the assumed covariant shear strains e_b = gamma .
+    /// dx/dxi_b (b = 0, 1) of MITC4 and MITC9 (elements.cc): e_b is
+    /// evaluated at the tying points of direction b and interpolated from
+    /// them; gamma = J^{-T} (e_0, e_1). On a rectangle this is the tying of
+    /// the Cartesian components; on distorted and curved cells it keeps
+    /// the element free of locking (Bathe and Dvorkin 1985, Bucalem and
+    /// Bathe 1993). Cell-independent.
+    struct ShearTying
+    {
+      ShearTying(const dealii::FiniteElement<2> &fe, Shear shear);
+      Shear shear;
+      /// the tying points of e_b, [b][t]
+      std::array<std::vector<dealii::Point<2>>, 2> points;
+      /// the shape functions' values and unit gradients there, [b][t][i]
+      std::array<std::vector<std::vector<double>>, 2>               values;
+      std::array<std::vector<std::vector<dealii::Tensor<1, 2>>>, 2> grads;
+      /// the interpolation weights of the tying points of e_b at p
+      std::vector<double>
+      weights(unsigned int b, const dealii::Point<2> &p) const;
+      /// All tying points, direction 0 first (for the Jacobians of a cell).
+      std::vector<dealii::Point<2>>
+      all_points() const;
+    };
+
+    /// gamma of shape function i at unit point p of a cell with inverse
+    /// Jacobian `inverse_jacobian` at p and Jacobians `tying_jacobians` at
+    /// the tying points (in the order of ShearTying::all_points()); for the
+    /// MITC elements.
+    static dealii::Tensor<1, 2>
+    tied_shear_strain(
+      const ShearTying                                   &tying,
+      unsigned int                                        component,
+      unsigned int                                        i,
+      const dealii::Point<2>                             &p,
+      const dealii::DerivativeForm<1, 2, 2>              &inverse_jacobian,
+      const std::vector<dealii::DerivativeForm<1, 2, 2>> &tying_jacobians);
 
   private:
     /// Read the "Mindlin" subsection (parameters.cc); needs the friction
@@ -269,23 +313,53 @@ namespace NitscheContact
     double
     energy_norm(const dealii::Vector<double> &v) const;
 
-    // The cell-independent element data (elements.cc).
+    // The element data (elements.cc).
+    /// What the assembly needs of one cell.
+    struct ElementData
+    {
+      /// bending + shear + membrane stiffness
+      dealii::FullMatrix<double> bulk_matrix;
+      /// bulk_matrix + the theta-terms at every contact point
+      dealii::FullMatrix<double> constant_matrix;
+      /// the theta-terms of contact point q, [q]
+      std::vector<dealii::FullMatrix<double>> theta_matrices;
+      std::vector<double>                     contact_JxW;    ///< [q]
+      std::vector<std::vector<ShapeContactData>> contact_shapes; ///< [q][i]
+      /// Strains of every shape function at the (p+1)x(p+1) Gauss points
+      /// of the bulk form: curvature k, shear gamma_h, membrane strain e
+      /// ([q][i]).
+      std::vector<std::vector<dealii::SymmetricTensor<2, 2>>> bulk_curvature,
+        bulk_membrane;
+      std::vector<std::vector<dealii::Tensor<1, 2>>> bulk_shear;
+      std::vector<double>                            bulk_JxW;
+    };
+    /// The FEValues that fill an ElementData, and one to fill.
+    struct ElementScratch
+    {
+      explicit ElementScratch(const MindlinModel &model);
+      dealii::FEValues<2> bulk, contact, tying;
+      std::vector<dealii::DerivativeForm<1, 2, 2>> tying_jacobians;
+      ElementData data;
+    };
+    /// The element data of `cell` into scratch.data.
+    void
+    fill_element_data(const dealii::DoFHandler<2>::active_cell_iterator &cell,
+                      ElementScratch &scratch) const;
+    /// The element data of cell c (of `cell_grid`): the shared one on a
+    /// uniform grid, else computed into scratch.data.
+    const ElementData &
+    element_data(std::size_t c, ElementScratch &scratch) const;
+    /// Per cycle: the shared element data (uniform grids) and the gaps.
     void
     precompute_cell_data();
-    /// The bulk stiffness of one cell and the strains of every shape
-    /// function at its Gauss points.
-    void
-    precompute_bulk_data();
-    /// The linearised bottom-face quantities of every shape function at
-    /// every contact point, and the theta-term matrices.
-    void
-    precompute_contact_data();
     /// The gap at every contact point of the mesh.
     void
     compute_gaps();
-    /// Kernel input at contact point q of a cell with local values u.
+    /// Kernel input at contact point q of a cell with element data d and
+    /// local values u.
     PointInput
-    point_input(const dealii::Vector<double> &u,
+    point_input(const ElementData            &d,
+                const dealii::Vector<double> &u,
                 unsigned int                  q,
                 double                        gap) const;
 
@@ -307,7 +381,8 @@ namespace NitscheContact
     /// Work arrays of assemble_cell().
     struct CellScratch
     {
-      explicit CellScratch(unsigned int n);
+      explicit CellScratch(const MindlinModel &model);
+      ElementScratch element;
       std::vector<dealii::types::global_dof_index> dofs;
       dealii::Vector<double> u, residual, tmp, point_law, point_branch;
       dealii::FullMatrix<double> matrix;
@@ -366,9 +441,12 @@ namespace NitscheContact
     /// The means over the contact points of cell c (of `cell_grid`).
     CellContactMeans
     cell_contact_means(unsigned int c) const;
-    /// The cell containing p (Cartesian index lookup), or end().
+    /// The cell containing p (on a uniform grid by its index), or end().
     dealii::DoFHandler<2>::active_cell_iterator
     locate(const dealii::Point<2> &p, dealii::Point<2> &unit_point) const;
+    /// The position of a cell in `cell_grid`.
+    std::size_t
+    cell_index(const dealii::DoFHandler<2>::active_cell_iterator &cell) const;
     /// |R| of the accepted iterate relative to max(|A U|, |F|); stops or
     /// warns when it is large.
     double
@@ -411,38 +489,42 @@ namespace NitscheContact
 
     dealii::Triangulation<2> triangulation;
     dealii::FESystem<2>      fe;
+    /// of the element's degree (isoparametric): MITC9 cells follow curved
+    /// edges
+    dealii::MappingQ<2>      mapping;
+    ShearTying               tying;
     dealii::DoFHandler<2>    dof_handler;
     dealii::AffineConstraints<double> constraints;
 
+    /// every cell is the same hx x hy rectangle (the Cartesian shapes)
+    bool         uniform_cells = true;
     unsigned int nx = 0, ny = 0; ///< cells per direction of the rectangle
     double       hx = 0., hy = 0.;
-    /// Active cells in the order of their position j*nx + i in the nx x ny
-    /// grid of the rectangle (the L-shape and the rectangle with hole leave
-    /// out some positions).
+    /// the longest cell side
+    double       cell_size = 0.;
+    /// Active cells, on a uniform grid in the order of their position
+    /// j*nx + i in the nx x ny grid of the rectangle (the L-shape and the
+    /// rectangle with hole leave out some positions).
     std::vector<dealii::DoFHandler<2>::active_cell_iterator> cell_grid;
     /// per grid position j*nx + i: the index in `cell_grid`, or
     /// UniformPlateGrid::no_cell
     std::vector<unsigned int> cell_at;
+    /// setup_dofs() on a uniform grid: nx, ny, hx, hy, cell_grid, cell_at.
+    void
+    index_uniform_grid();
     /// setup_dofs(): the boundary conditions' constraints.
     void
     make_constraints();
 
-    // Cell-independent data of the current cycle.
-    dealii::Quadrature<2>                        contact_quadrature;
-    std::vector<double>                          contact_JxW;
-    std::vector<std::vector<ShapeContactData>>   contact_shapes; // [q][i]
-    std::vector<std::vector<double>>             shape_values;   // [q][i]
-    std::vector<std::vector<dealii::Tensor<1, 2>>> shape_grads;  // [q][i]
-    std::vector<dealii::FullMatrix<double>>      theta_matrices; // [q]
-    dealii::FullMatrix<double>                   bulk_cell_matrix;
-    /// Strains of every shape function at the 2x2 Gauss points of the bulk
-    /// form: curvature k, MITC4 shear gamma_h, membrane strain e ([q][i]).
-    std::vector<std::vector<dealii::SymmetricTensor<2, 2>>> bulk_curvature,
-      bulk_membrane;
-    std::vector<std::vector<dealii::Tensor<1, 2>>> bulk_shear;
-    std::vector<double>                            bulk_JxW;
-    dealii::FullMatrix<double>                   constant_cell_matrix;
-    std::vector<double>                          gaps; // [cell*nq + q]
+    dealii::Quadrature<2> contact_quadrature;
+    dealii::Quadrature<2> bulk_quadrature; ///< (p+1)x(p+1) Gauss
+    /// the shape functions' values at the contact points, [q][i]
+    std::vector<std::vector<double>> shape_values;
+    /// the element data of every cell of a uniform grid
+    ElementData         uniform_data;
+    std::vector<double> gaps; // [cell*nq + q]
+    /// point location on meshes that are not uniform grids
+    std::unique_ptr<dealii::GridTools::Cache<2>> point_cache;
 
     dealii::TrilinosWrappers::SparseMatrix constant_matrix;
     dealii::TrilinosWrappers::SparseMatrix system_matrix;
@@ -461,6 +543,8 @@ namespace NitscheContact
     std::array<dealii::FullMatrix<double>, 4> child_prolongation;
     unsigned long last_changed = 0; ///< status changes of the last matrix
     dealii::Vector<double>                 load;      // condensed F
+    /// the integral of the load over the plate (factor 1)
+    double                                 load_integral = 0.;
     dealii::Vector<double>                 residual;  // -R(U), condensed
     /// per cell: -(its residual), its contact energy (assemble())
     std::vector<double> cell_residuals, cell_energies;
