@@ -39,6 +39,8 @@ namespace NitscheContact
     constant_part_stale = false;
     if (assembled_matrix)
       constant_matrix = 0.;
+    if (!uniform_cells)
+      bulk_matrix = 0.;
     load          = 0.;
     load_integral = 0.;
     const unsigned int n = fe.n_dofs_per_cell();
@@ -67,18 +69,20 @@ namespace NitscheContact
                 cell_load(i) += value * values.shape_value(i, q) *
                                 values.JxW(q);
           }
+        const ElementData &d = element_data(c, scratch);
         if (assembled_matrix)
           constraints.distribute_local_to_global(
-            element_data(c, scratch).constant_matrix,
-            cell_load,
-            dofs,
-            constant_matrix,
-            load);
+            d.constant_matrix, cell_load, dofs, constant_matrix, load);
         else
           constraints.distribute_local_to_global(cell_load, dofs, load);
+        if (!uniform_cells)
+          constraints.distribute_local_to_global(d.bulk_matrix, dofs,
+                                                 bulk_matrix);
       }
     if (assembled_matrix)
       constant_matrix.compress(VectorOperation::add);
+    if (!uniform_cells)
+      bulk_matrix.compress(VectorOperation::add);
   }
 
 
@@ -155,6 +159,16 @@ namespace NitscheContact
         },
         64);
     const double contact_energy = add_cell_residuals();
+    if (!uniform_cells)
+      {
+        // the constant part (bulk + theta-terms) U of every cell at once
+        Vector<double> constant_part(residual.size());
+        constant_matrix.vmult(constant_part, solution);
+        // (the condensed matrix holds only a diagonal in a constrained
+        // row, where the residual is zero)
+        constraints.set_zero(constant_part);
+        residual.add(-1., constant_part);
+      }
     if (build_matrix)
       {
         counts.n_reversed = pass.n_reversed;
@@ -203,12 +217,17 @@ namespace NitscheContact
     const unsigned int  nq     = contact_quadrature.size();
     FullMatrix<double> *matrix = build_matrix ? &scratch.matrix : nullptr;
     const auto         &cell   = cell_grid[c];
-    const ElementData  &d      = element_data(c, scratch.element);
+    // (on a uniform grid the shared data; else the cell's contact part,
+    // the constant part of the residual coming from constant_matrix)
+    const ElementData &d = element_data(c, scratch.element, false);
     cell->get_dof_indices(scratch.dofs);
     for (unsigned int i = 0; i < n; ++i)
       scratch.u(i) = solution(scratch.dofs[i]);
     // Constant part: (bulk + theta-terms) U.
-    d.constant_matrix.vmult(scratch.residual, scratch.u);
+    if (uniform_cells)
+      d.constant_matrix.vmult(scratch.residual, scratch.u);
+    else
+      scratch.residual = 0.;
     bool   any_active = false;
     double energy     = 0.;
     for (unsigned int q = 0; q < nq; ++q)
@@ -256,10 +275,15 @@ namespace NitscheContact
                                  d.contact_JxW[q],
                                  matrix,
                                  scratch.residual);
-        d.theta_matrices[q].vmult(scratch.tmp, scratch.u);
+        const FullMatrix<double> *theta = &scratch.theta;
+        if (q < d.theta_matrices.size())
+          theta = &d.theta_matrices[q];
+        else
+          theta_matrix(d, q, scratch.theta);
+        theta->vmult(scratch.tmp, scratch.u);
         scratch.residual -= scratch.tmp;
         if (matrix)
-          matrix->add(-1., d.theta_matrices[q]);
+          matrix->add(-1., *theta);
       }
     cell_energies[c] = energy;
     for (unsigned int i = 0; i < n; ++i)

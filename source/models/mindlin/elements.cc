@@ -19,6 +19,17 @@ namespace NitscheContact
     const double gauss_b[3] = {0.5 - 0.5 * std::sqrt(0.6), 0.5,
                                0.5 + 0.5 * std::sqrt(0.6)};
 
+    /// v as m vectors of n (keeping their memory when the sizes match).
+    template <typename T>
+    void
+    resize(std::vector<std::vector<T>> &v, const unsigned int m,
+           const unsigned int n)
+    {
+      v.resize(m);
+      for (auto &row : v)
+        row.resize(n);
+    }
+
     /// Lagrange polynomial k of the nodes x[0..n-1] at s.
     double
     lagrange(const double *x, const unsigned int n, const unsigned int k,
@@ -79,17 +90,18 @@ namespace NitscheContact
 
 
 
-  std::vector<double>
-  MindlinModel::ShearTying::weights(const unsigned int b,
-                                    const Point<2>    &p) const
+  std::array<std::vector<double>, 2>
+  MindlinModel::ShearTying::weights(const Point<2> &p) const
   {
-    if (shear == Shear::mitc4)
-      return {1. - p[1 - b], p[1 - b]};
-    std::vector<double> w;
-    for (unsigned int l = 0; l < 3; ++l)
-      for (unsigned int k = 0; k < 2; ++k)
-        w.push_back(lagrange(gauss_a, 2, k, p[b]) *
-                    lagrange(gauss_b, 3, l, p[1 - b]));
+    std::array<std::vector<double>, 2> w;
+    for (unsigned int b = 0; b < 2; ++b)
+      if (shear == Shear::mitc4)
+        w[b] = {1. - p[1 - b], p[1 - b]};
+      else if (shear == Shear::mitc9)
+        for (unsigned int l = 0; l < 3; ++l)
+          for (unsigned int k = 0; k < 2; ++k)
+            w[b].push_back(lagrange(gauss_a, 2, k, p[b]) *
+                           lagrange(gauss_b, 3, l, p[1 - b]));
     return w;
   }
 
@@ -105,36 +117,43 @@ namespace NitscheContact
 
 
 
-  Tensor<1, 2>
-  MindlinModel::tied_shear_strain(
-    const ShearTying                     &tying,
-    const unsigned int                    component,
-    const unsigned int                    i,
-    const Point<2>                       &p,
-    const DerivativeForm<1, 2, 2>        &inverse_jacobian,
-    const std::vector<DerivativeForm<1, 2, 2>> &tying_jacobians)
+  void
+  MindlinModel::ShearTying::covariant_strains(
+    const unsigned int                          component,
+    const unsigned int                          i,
+    const std::vector<DerivativeForm<1, 2, 2>> &tying_jacobians,
+    std::array<std::vector<double>, 2>         &e) const
   {
-    // the covariant strain of the shape function at a tying point: d_b w
-    // for w, phi . dx/dxi_b for phi; interpolated, then gamma = J^{-T} e
-    Tensor<1, 2> e;
-    if (component > phi_component + 1)
-      return e;
     unsigned int offset = 0;
     for (unsigned int b = 0; b < 2; ++b)
       {
-        const std::vector<double> w = tying.weights(b, p);
-        for (unsigned int t = 0; t < w.size(); ++t)
-          e[b] += w[t] *
-                  (component == w_component ?
-                     tying.grads[b][t][i][b] :
-                     tying.values[b][t][i] *
-                       tying_jacobians[offset + t][component - phi_component][b]);
-        offset += tying.points[b].size();
+        e[b].resize(points[b].size());
+        for (unsigned int t = 0; t < points[b].size(); ++t)
+          e[b][t] = component == w_component ? grads[b][t][i][b] :
+                    component <= phi_component + 1 ?
+                      values[b][t][i] *
+                        tying_jacobians[offset + t][component - phi_component]
+                                       [b] :
+                      0.;
+        offset += points[b].size();
       }
+  }
+
+
+
+  Tensor<1, 2>
+  MindlinModel::ShearTying::strain(const std::array<std::vector<double>, 2> &w,
+                                   const std::array<std::vector<double>, 2> &e,
+                                   const DerivativeForm<1, 2, 2> &inverse_jacobian)
+  {
+    double tied[2] = {0., 0.};
+    for (unsigned int b = 0; b < 2; ++b)
+      for (unsigned int t = 0; t < w[b].size(); ++t)
+        tied[b] += w[b][t] * e[b][t];
     Tensor<1, 2> gamma;
     for (unsigned int a = 0; a < 2; ++a)
-      for (unsigned int b = 0; b < 2; ++b)
-        gamma[a] += inverse_jacobian[b][a] * e[b];
+      gamma[a] = inverse_jacobian[0][a] * tied[0] +
+                 inverse_jacobian[1][a] * tied[1];
     return gamma;
   }
 
@@ -167,10 +186,12 @@ namespace NitscheContact
     jacobian[1][1] = hy;
     inverse[0][0]  = 1. / hx;
     inverse[1][1]  = 1. / hy;
-    return tied_shear_strain(
-      tying, c, i, p, inverse,
-      std::vector<DerivativeForm<1, 2, 2>>(tying.all_points().size(),
-                                           jacobian));
+    std::array<std::vector<double>, 2> e;
+    tying.covariant_strains(
+      c, i,
+      std::vector<DerivativeForm<1, 2, 2>>(tying.all_points().size(), jacobian),
+      e);
+    return ShearTying::strain(tying.weights(p), e, inverse);
   }
 
 
@@ -194,7 +215,8 @@ namespace NitscheContact
   void
   MindlinModel::fill_element_data(
     const DoFHandler<2>::active_cell_iterator &cell,
-    ElementScratch                            &scratch) const
+    ElementScratch                            &scratch,
+    const bool                                 with_bulk) const
   {
     ElementData       &d   = scratch.data;
     const unsigned int n   = fe.n_dofs_per_cell();
@@ -204,68 +226,80 @@ namespace NitscheContact
     const double       D   = prm.bending_stiffness();
     const double       S   = settings.shear_factor * mu * t;
     const double       Dm  = E * t / (1. - nu * nu);
-    scratch.bulk.reinit(cell);
+    if (with_bulk)
+      scratch.bulk.reinit(cell);
     scratch.contact.reinit(cell);
     scratch.tying.reinit(cell);
     scratch.tying_jacobians.resize(scratch.tying.n_quadrature_points);
     for (unsigned int k = 0; k < scratch.tying.n_quadrature_points; ++k)
       scratch.tying_jacobians[k] = scratch.tying.jacobian(k);
-    // gamma of shape function i at point q of `values`
-    const auto shear = [&](const FEValues<2> &values, const unsigned int i,
-                           const unsigned int q) {
-      const unsigned int c = fe.system_to_component_index(i).first;
-      Tensor<1, 2>       g;
-      if (settings.shear != Shear::full)
-        return tied_shear_strain(tying, c, i,
-                                 values.get_quadrature().point(q),
-                                 values.inverse_jacobian(q),
-                                 scratch.tying_jacobians);
-      if (c == w_component)
-        g = values.shape_grad(i, q);
-      else if (c == phi_component || c == phi_component + 1)
-        g[c - phi_component] = values.shape_value(i, q);
-      return g;
-    };
+    scratch.covariant.resize(n);
+    if (settings.shear != Shear::full)
+      for (unsigned int i = 0; i < n; ++i)
+        tying.covariant_strains(fe.system_to_component_index(i).first, i,
+                                scratch.tying_jacobians,
+                                scratch.covariant[i]);
+    // gamma of shape function i at point q of `values` with the tying
+    // weights `weights` there
+    const auto shear =
+      [&](const FEValues<2> &values,
+          const std::vector<std::array<std::vector<double>, 2>> &weights,
+          const unsigned int i, const unsigned int q) {
+        if (settings.shear != Shear::full)
+          return ShearTying::strain(weights[q], scratch.covariant[i],
+                                    values.inverse_jacobian(q));
+        const unsigned int c = fe.system_to_component_index(i).first;
+        Tensor<1, 2>       g;
+        if (c == w_component)
+          g = values.shape_grad(i, q);
+        else if (c == phi_component || c == phi_component + 1)
+          g[c - phi_component] = values.shape_value(i, q);
+        return g;
+      };
 
-    // Bulk stiffness, (p+1)x(p+1) Gauss for Q_p (exact for bending,
-    // membrane and the MITC shear on rectangles).
-    const unsigned int nb = bulk_quadrature.size();
-    d.bulk_matrix.reinit(n, n);
-    d.bulk_curvature.assign(nb, std::vector<SymmetricTensor<2, 2>>(n));
-    d.bulk_membrane.assign(nb, std::vector<SymmetricTensor<2, 2>>(n));
-    d.bulk_shear.assign(nb, std::vector<Tensor<1, 2>>(n));
-    d.bulk_JxW.assign(nb, 0.);
-    for (unsigned int q = 0; q < nb; ++q)
+    if (with_bulk)
       {
-        auto &curvature = d.bulk_curvature[q], &strain = d.bulk_membrane[q];
-        auto &gamma     = d.bulk_shear[q];
-        const double JxW = d.bulk_JxW[q] = scratch.bulk.JxW(q);
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            const unsigned int c = fe.system_to_component_index(i).first;
-            const Tensor<1, 2> g = scratch.bulk.shape_grad(i, q);
-            // sym grad of the vector (phi_x, phi_y) or (u_x, u_y) whose
-            // component k is the shape function: sym(e_k (x) g)
-            SymmetricTensor<2, 2> s;
-            const unsigned int    k =
-              (c == phi_component || c == ubar_component) ? 0 : 1;
-            s[k][k] = g[k];
-            s[0][1] = 0.5 * g[1 - k];
-            if (c == phi_component || c == phi_component + 1)
-              curvature[i] = s;
-            else if (c != w_component)
-              strain[i] = s;
-            gamma[i] = shear(scratch.bulk, i, q);
-          }
-        for (unsigned int i = 0; i < n; ++i)
-          for (unsigned int j = 0; j < n; ++j)
-            d.bulk_matrix(i, j) +=
-              (D * ((1. - nu) * (curvature[i] * curvature[j]) +
-                    nu * trace(curvature[i]) * trace(curvature[j])) +
-               S * (gamma[i] * gamma[j]) +
-               Dm * ((1. - nu) * (strain[i] * strain[j]) +
-                     nu * trace(strain[i]) * trace(strain[j]))) *
-              JxW;
+      // Bulk stiffness, (p+1)x(p+1) Gauss for Q_p (exact for bending,
+      // membrane and the MITC shear on rectangles).
+      const unsigned int nb = bulk_quadrature.size();
+      d.bulk_matrix.reinit(n, n); // (keeps its memory)
+      resize(d.bulk_curvature, nb, n);
+      resize(d.bulk_membrane, nb, n);
+      resize(d.bulk_shear, nb, n);
+      d.bulk_JxW.resize(nb);
+      for (unsigned int q = 0; q < nb; ++q)
+        {
+          auto &curvature = d.bulk_curvature[q], &strain = d.bulk_membrane[q];
+          auto &gamma     = d.bulk_shear[q];
+          const double JxW = d.bulk_JxW[q] = scratch.bulk.JxW(q);
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              const unsigned int c = fe.system_to_component_index(i).first;
+              const Tensor<1, 2> g = scratch.bulk.shape_grad(i, q);
+              // sym grad of the vector (phi_x, phi_y) or (u_x, u_y) whose
+              // component k is the shape function: sym(e_k (x) g)
+              SymmetricTensor<2, 2> s;
+              const unsigned int    k =
+                (c == phi_component || c == ubar_component) ? 0 : 1;
+              s[k][k]      = g[k];
+              s[0][1]      = 0.5 * g[1 - k];
+              curvature[i] = strain[i] = SymmetricTensor<2, 2>();
+              if (c == phi_component || c == phi_component + 1)
+                curvature[i] = s;
+              else if (c != w_component)
+                strain[i] = s;
+              gamma[i] = shear(scratch.bulk, bulk_weights, i, q);
+            }
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j < n; ++j)
+              d.bulk_matrix(i, j) +=
+                (D * ((1. - nu) * (curvature[i] * curvature[j]) +
+                      nu * trace(curvature[i]) * trace(curvature[j])) +
+                 S * (gamma[i] * gamma[j]) +
+                 Dm * ((1. - nu) * (strain[i] * strain[j]) +
+                       nu * trace(strain[i]) * trace(strain[j]))) *
+                JxW;
+        }
       }
 
     // Linearised bottom-face quantities (doc/theory.md 3.3) of every shape
@@ -273,10 +307,10 @@ namespace NitscheContact
     // - eps div phi), u_t = ubar - eps phi, sigma_t = -mu gamma_h.
     const unsigned int nq = contact_quadrature.size();
     d.contact_JxW.resize(nq);
-    d.contact_shapes.assign(nq, std::vector<ShapeContactData>(n));
-    d.theta_matrices.assign(nq, FullMatrix<double>(n, n));
-    d.constant_matrix   = d.bulk_matrix;
-    const double t_over_r = prm.theta / r;
+    resize(d.contact_shapes, nq, n);
+    d.theta_matrices.resize(with_bulk ? nq : 0);
+    if (with_bulk)
+      d.constant_matrix = d.bulk_matrix;
     for (unsigned int q = 0; q < nq; ++q)
       {
         d.contact_JxW[q] = scratch.contact.JxW(q);
@@ -301,34 +335,52 @@ namespace NitscheContact
                 s.sigma_n            = lambda * g[k];
                 s.u_t[k]             = val;
               }
-            const Tensor<1, 2> gam = shear(scratch.contact, i, q);
+            const Tensor<1, 2> gam = shear(scratch.contact, contact_weights, i, q);
             s.sigma_t[0]           = -mu * gam[0];
             s.sigma_t[1]           = -mu * gam[1];
           }
-        // The linear theta-terms that the kernel adds at every point:
-        // -(theta/r) (sigma_n(u) sigma_n(v) [+ sigma_t(u).sigma_t(v)]).
-        for (unsigned int i = 0; i < n; ++i)
-          for (unsigned int j = 0; j < n; ++j)
-            {
-              const ShapeContactData &si = d.contact_shapes[q][i],
-                                     &sj = d.contact_shapes[q][j];
-              double v = si.sigma_n * sj.sigma_n;
-              if (friction > 0.)
-                v += si.sigma_t * sj.sigma_t;
-              d.theta_matrices[q](i, j) = -t_over_r * v * d.contact_JxW[q];
-            }
-        d.constant_matrix.add(1., d.theta_matrices[q]);
+        if (with_bulk)
+          {
+            theta_matrix(d, q, d.theta_matrices[q]);
+            d.constant_matrix.add(1., d.theta_matrices[q]);
+          }
       }
   }
 
 
 
+  void
+  MindlinModel::theta_matrix(const ElementData  &d,
+                             const unsigned int  q,
+                             FullMatrix<double> &m) const
+  {
+    // The linear theta-terms that the kernel adds at every point:
+    // -(theta/r) (sigma_n(u) sigma_n(v) [+ sigma_t(u).sigma_t(v)]).
+    const unsigned int n        = fe.n_dofs_per_cell();
+    const double       t_over_r = prm.theta / r;
+    m.reinit(n, n);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          const ShapeContactData &si = d.contact_shapes[q][i],
+                                 &sj = d.contact_shapes[q][j];
+          double v = si.sigma_n * sj.sigma_n;
+          if (friction > 0.)
+            v += si.sigma_t * sj.sigma_t;
+          m(i, j) = -t_over_r * v * d.contact_JxW[q];
+        }
+  }
+
+
+
   const MindlinModel::ElementData &
-  MindlinModel::element_data(const std::size_t c, ElementScratch &scratch) const
+  MindlinModel::element_data(const std::size_t c,
+                             ElementScratch   &scratch,
+                             const bool        with_bulk) const
   {
     if (uniform_cells)
       return uniform_data;
-    fill_element_data(cell_grid[c], scratch);
+    fill_element_data(cell_grid[c], scratch, with_bulk);
     return scratch.data;
   }
 

@@ -82,6 +82,10 @@ namespace NitscheContact
     // the bending stiffness by 0.45 % (doc/mindlin.md)
     prm.use_model_gamma0(200.);
     friction = common.friction;
+    for (const Point<2> &p : bulk_quadrature.get_points())
+      bulk_weights.push_back(tying.weights(p));
+    for (const Point<2> &p : contact_quadrature.get_points())
+      contact_weights.push_back(tying.weights(p));
     if (Utilities::MPI::n_mpi_processes(comm) > 1)
       throw InputError(
         "invalid value 'mindlin' for parameter 'Model' on " +
@@ -205,6 +209,7 @@ namespace NitscheContact
     assembled_matrix = !use_multigrid || settings.check_multigrid;
     constant_matrix.clear();
     system_matrix.clear();
+    bulk_matrix.clear();
     if (assembled_matrix)
       {
         DynamicSparsityPattern dsp(dof_handler.n_dofs());
@@ -212,6 +217,8 @@ namespace NitscheContact
         const IndexSet owned = complete_index_set(dof_handler.n_dofs());
         constant_matrix.reinit(owned, owned, dsp, comm);
         system_matrix.reinit(owned, owned, dsp, comm);
+        if (!uniform_cells)
+          bulk_matrix.reinit(owned, owned, dsp, comm);
       }
 
     load.reinit(dof_handler.n_dofs());
@@ -404,6 +411,15 @@ namespace NitscheContact
   double
   MindlinModel::energy_norm(const Vector<double> &v) const
   {
+    if (!uniform_cells)
+      {
+        // v^T K v with the condensed K (bulk_matrix) and v's constrained
+        // entries set to zero
+        Vector<double> free_part(v), product(v.size());
+        constraints.set_zero(free_part);
+        bulk_matrix.vmult(product, free_part);
+        return std::sqrt(std::max(free_part * product, 0.));
+      }
     const unsigned int n = fe.n_dofs_per_cell();
     std::vector<types::global_dof_index> dofs(n);
     Vector<double> u(n);

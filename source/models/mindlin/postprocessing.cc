@@ -128,7 +128,7 @@ namespace NitscheContact
     for (unsigned int c = 0; c < cell_grid.size(); ++c)
       {
         const auto        &cell = cell_grid[c];
-        const ElementData &d    = element_data(c, scratch);
+        const ElementData &d    = element_data(c, scratch, false);
         cell->get_dof_indices(dofs);
         for (unsigned int i = 0; i < n; ++i)
           u(i) = solution(dofs[i]);
@@ -253,7 +253,7 @@ namespace NitscheContact
     for (unsigned int i = 0; i < n; ++i)
       u(i) = solution(dofs[i]);
     ElementScratch     scratch(*this);
-    const ElementData &d = element_data(c, scratch);
+    const ElementData &d = element_data(c, scratch, false);
     CellContactMeans   means;
     for (unsigned int q = 0; q < nq; ++q)
       {
@@ -429,7 +429,7 @@ namespace NitscheContact
     for (unsigned int c = 0; c < cell_grid.size(); ++c)
       {
         const auto        &cell = cell_grid[c];
-        const ElementData &d    = element_data(c, scratch);
+        const ElementData &d    = element_data(c, scratch, false);
         cell->get_dof_indices(dofs);
         for (unsigned int i = 0; i < n; ++i)
           u(i) = solution(dofs[i]);

@@ -277,26 +277,29 @@ namespace NitscheContact
       /// the shape functions' values and unit gradients there, [b][t][i]
       std::array<std::vector<std::vector<double>>, 2>               values;
       std::array<std::vector<std::vector<dealii::Tensor<1, 2>>>, 2> grads;
-      /// the interpolation weights of the tying points of e_b at p
-      std::vector<double>
-      weights(unsigned int b, const dealii::Point<2> &p) const;
+      /// The interpolation weights of the tying points of e_b at p, [b][t].
+      std::array<std::vector<double>, 2>
+      weights(const dealii::Point<2> &p) const;
       /// All tying points, direction 0 first (for the Jacobians of a cell).
       std::vector<dealii::Point<2>>
       all_points() const;
+      /// e_b of shape function i (of the given component) at the tying
+      /// points, [b][t], on a cell with the Jacobians `tying_jacobians`
+      /// there (in the order of all_points()): d_b w for w, phi . dx/dxi_b
+      /// for phi, 0 for the membrane displacements.
+      void
+      covariant_strains(
+        unsigned int                                        component,
+        unsigned int                                        i,
+        const std::vector<dealii::DerivativeForm<1, 2, 2>> &tying_jacobians,
+        std::array<std::vector<double>, 2>                 &e) const;
+      /// gamma = J^{-T} (sum_t w_bt e_bt)_b at a point with the weights w
+      /// and the inverse Jacobian there.
+      static dealii::Tensor<1, 2>
+      strain(const std::array<std::vector<double>, 2> &w,
+             const std::array<std::vector<double>, 2> &e,
+             const dealii::DerivativeForm<1, 2, 2>    &inverse_jacobian);
     };
-
-    /// gamma of shape function i at unit point p of a cell with inverse
-    /// Jacobian `inverse_jacobian` at p and Jacobians `tying_jacobians` at
-    /// the tying points (in the order of ShearTying::all_points()); for the
-    /// MITC elements.
-    static dealii::Tensor<1, 2>
-    tied_shear_strain(
-      const ShearTying                                   &tying,
-      unsigned int                                        component,
-      unsigned int                                        i,
-      const dealii::Point<2>                             &p,
-      const dealii::DerivativeForm<1, 2, 2>              &inverse_jacobian,
-      const std::vector<dealii::DerivativeForm<1, 2, 2>> &tying_jacobians);
 
   private:
     /// Read the "Mindlin" subsection (parameters.cc); needs the friction
@@ -339,16 +342,28 @@ namespace NitscheContact
       explicit ElementScratch(const MindlinModel &model);
       dealii::FEValues<2> bulk, contact, tying;
       std::vector<dealii::DerivativeForm<1, 2, 2>> tying_jacobians;
+      /// the covariant strains of every shape function, [i][b][t]
+      std::vector<std::array<std::vector<double>, 2>> covariant;
       ElementData data;
     };
-    /// The element data of `cell` into scratch.data.
+    /// The element data of `cell` into scratch.data; without `with_bulk`
+    /// only the contact points' part (contact_JxW, contact_shapes).
     void
     fill_element_data(const dealii::DoFHandler<2>::active_cell_iterator &cell,
-                      ElementScratch &scratch) const;
+                      ElementScratch &scratch,
+                      bool            with_bulk = true) const;
     /// The element data of cell c (of `cell_grid`): the shared one on a
-    /// uniform grid, else computed into scratch.data.
+    /// uniform grid, else computed into scratch.data (without `with_bulk`
+    /// only the contact points' part).
     const ElementData &
-    element_data(std::size_t c, ElementScratch &scratch) const;
+    element_data(std::size_t     c,
+                 ElementScratch &scratch,
+                 bool            with_bulk = true) const;
+    /// The theta-term matrix of contact point q of d, into m.
+    void
+    theta_matrix(const ElementData          &d,
+                 unsigned int                q,
+                 dealii::FullMatrix<double> &m) const;
     /// Per cycle: the shared element data (uniform grids) and the gaps.
     void
     precompute_cell_data();
@@ -386,6 +401,8 @@ namespace NitscheContact
       std::vector<dealii::types::global_dof_index> dofs;
       dealii::Vector<double> u, residual, tmp, point_law, point_branch;
       dealii::FullMatrix<double> matrix;
+      /// a theta-term matrix of element data without stored ones
+      dealii::FullMatrix<double> theta;
     };
     void
     assemble_constant_part();
@@ -493,6 +510,9 @@ namespace NitscheContact
     /// edges
     dealii::MappingQ<2>      mapping;
     ShearTying               tying;
+    /// the tying weights at the bulk and the contact points, [q][b][t]
+    std::vector<std::array<std::vector<double>, 2>> bulk_weights,
+      contact_weights;
     dealii::DoFHandler<2>    dof_handler;
     dealii::AffineConstraints<double> constraints;
 
@@ -527,6 +547,9 @@ namespace NitscheContact
     std::unique_ptr<dealii::GridTools::Cache<2>> point_cache;
 
     dealii::TrilinosWrappers::SparseMatrix constant_matrix;
+    /// the bending + shear + membrane stiffness, on meshes that are not
+    /// uniform grids (energy norms without the cells' element data)
+    dealii::TrilinosWrappers::SparseMatrix bulk_matrix;
     dealii::TrilinosWrappers::SparseMatrix system_matrix;
     ReusedFactorization                    direct_solver;
     /// 'Linear solver/Type = multigrid': the Kirchhoff (BFS) multigrid with the
