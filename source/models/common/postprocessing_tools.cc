@@ -61,8 +61,12 @@ namespace NitscheContact
     using namespace dealii;
     const Triangulation<2> &tria    = cache.get_triangulation();
     const Mapping<2>       &mapping = cache.get_mapping();
+    // a point off the plate is not searched for: deal.II's search visits
+    // every cell before it gives up
+    if (!geometry.contains(p))
+      return {tria.end(), Point<2>()};
     const auto found = GridTools::find_active_cell_around_point(cache, p, hint);
-    if (found.first != tria.end() || !geometry.contains(p))
+    if (found.first != tria.end())
       return found;
     // the cell around the nearest vertex whose unit coordinates lie
     // nearest the unit square

@@ -17,9 +17,10 @@ namespace NitscheContact
     Vector<float> pressure(triangulation.n_active_cells()),
       in_contact(triangulation.n_active_cells()),
       slipping(triangulation.n_active_cells());
+    ElementScratch scratch(*this);
     for (unsigned int c = 0; c < cell_grid.size(); ++c)
       {
-        const CellContactMeans means = cell_contact_means(c);
+        const CellContactMeans means = cell_contact_means(c, scratch);
         const unsigned int     index = cell_grid[c]->active_cell_index();
         pressure(index)              = means.pressure();
         in_contact(index)            = means.contact_fraction();

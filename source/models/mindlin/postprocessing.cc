@@ -243,7 +243,8 @@ namespace NitscheContact
 
 
   CellContactMeans
-  MindlinModel::cell_contact_means(const unsigned int c) const
+  MindlinModel::cell_contact_means(const unsigned int c,
+                                   ElementScratch    &scratch) const
   {
     const unsigned int                   n  = fe.n_dofs_per_cell();
     const unsigned int                   nq = contact_quadrature.size();
@@ -252,7 +253,6 @@ namespace NitscheContact
     cell_grid[c]->get_dof_indices(dofs);
     for (unsigned int i = 0; i < n; ++i)
       u(i) = solution(dofs[i]);
-    ElementScratch     scratch(*this);
     const ElementData &d = element_data(c, scratch, false);
     CellContactMeans   means;
     for (unsigned int q = 0; q < nq; ++q)
@@ -272,12 +272,13 @@ namespace NitscheContact
   {
     std::vector<double> p(points.size(),
                           std::numeric_limits<double>::quiet_NaN());
+    ElementScratch scratch(*this);
     for (unsigned int k = 0; k < points.size(); ++k)
       {
         Point<2>   unit;
         const auto cell = locate(points[k], unit);
         if (cell != dof_handler.end())
-          p[k] = cell_contact_means(cell_index(cell)).pressure();
+          p[k] = cell_contact_means(cell_index(cell), scratch).pressure();
       }
     return p;
   }

@@ -457,7 +457,7 @@ namespace NitscheContact
     // Postprocessing (postprocessing.cc).
     /// The means over the contact points of cell c (of `cell_grid`).
     CellContactMeans
-    cell_contact_means(unsigned int c) const;
+    cell_contact_means(unsigned int c, ElementScratch &scratch) const;
     /// The cell containing p (on a uniform grid by its index), or end().
     dealii::DoFHandler<2>::active_cell_iterator
     locate(const dealii::Point<2> &p, dealii::Point<2> &unit_point) const;
