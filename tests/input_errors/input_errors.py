@@ -10,6 +10,9 @@ import shutil
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "verification"))
+from common import write_msh  # noqa: E402
+
 p = argparse.ArgumentParser()
 p.add_argument("--exe", required=True)
 p.add_argument("--workdir", required=True)
@@ -355,7 +358,8 @@ CASES = [
      ["Geometry/Boundary conditions", "boundary id 2", "has no condition"]),
     ("a plate model on a disk",
      "set Model = kirchhoff\nsubsection Geometry\n  set Shape = disk\nend",
-     ["Geometry/Shape", "'disk'", "'L-shape' and 'rectangle with hole' only", "Mindlin and the membrane"]),
+     ["Geometry/Shape", "'disk'", "'rectangle with hole' and 'mesh file' only",
+      "Mindlin and the membrane"]),
     ("the 3D model on an L-shape",
      "subsection Geometry\n  set Shape = L-shape\n  set Subdivisions = 2, 2, 1\nend",
      ["Geometry/Shape", "'L-shape'", "'rectangle' only"]),
@@ -452,6 +456,23 @@ CASES.append(("mesh file of triangles",
               "  set Mesh file = triangles.msh\nend",
               ["Geometry/Mesh file", "triangles.msh", "not a quadrilateral",
                "at 6.66667, 3.33333"]))
+# the Kirchhoff plate on mesh files: a cell that is not an axis-parallel
+# rectangle (the shipped plate with a hole) and axis-parallel rectangles of
+# different widths (x -> x^2/10 on a 4 x 4 grid)
+hole_mesh = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
+                         "parameters", "meshes", "plate_with_hole.msh")
+CASES.append(("Kirchhoff on a mesh file of general quadrilaterals",
+              "set Model = kirchhoff\nsubsection Geometry\n  set Shape = mesh file\n"
+              "  set Mesh file = %s\n  set Boundary conditions = all: clamped\nend" % hole_mesh,
+              ["Geometry/Mesh file", "plate_with_hole.msh", "not an axis-parallel rectangle",
+               "Model = mindlin"]))
+write_msh(os.path.join(args.workdir, "graded.msh"), 10.0, 10.0, 4, 4, lambda x, y: False,
+          lambda x, y: (x * x / 10, y))
+CASES.append(("Kirchhoff on a mesh file of unequal rectangles",
+              "set Model = kirchhoff\nsubsection Geometry\n  set Shape = mesh file\n"
+              "  set Mesh file = graded.msh\nend",
+              ["Geometry/Mesh file", "graded.msh", "(0.625 0), (2.5 0), (0.625 2.5), (2.5 2.5)",
+               "does not fill a position of the grid of 0.625 x 2.5 cells"]))
 CASES.append(("boundary id 1000 on the rectangle",
               "subsection Geometry\n  set Boundary conditions = 1000: free; "
               "all: clamped\nend",

@@ -124,6 +124,12 @@ namespace NitscheContact
 
     /// The bounding box of the plate.
     dealii::Point<2> lower, upper;
+    /// 'Geometry/Mesh file' (for 'Shape = mesh file'), for messages.
+    const std::string &
+    mesh_file_name() const
+    {
+      return mesh_file;
+    }
     /// The larger side of the bounding box.
     double
     size() const

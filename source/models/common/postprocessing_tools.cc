@@ -11,22 +11,24 @@ namespace NitscheContact
 {
   UniformPlateGrid::UniformPlateGrid(const unsigned int               nx,
                                      const unsigned int               ny,
-                                     const double                     length_x,
-                                     const double                     length_y,
+                                     const dealii::Point<2>          &lower,
+                                     const dealii::Point<2>          &upper,
                                      const std::vector<unsigned int> *cell_at)
     : nx(nx)
     , ny(ny)
-    , length_x(length_x)
-    , length_y(length_y)
+    , lower(lower)
+    , upper(upper)
     , cell_at(cell_at)
   {}
 
   std::optional<UniformPlateGrid::Location>
   UniformPlateGrid::locate(const dealii::Point<2> &p) const
   {
+    const double length_x = upper[0] - lower[0], length_y = upper[1] - lower[1];
     const double hx = length_x / nx, hy = length_y / ny;
-    const int    i = std::min<int>(nx - 1, std::max(0., p[0] / hx));
-    const int    j = std::min<int>(ny - 1, std::max(0., p[1] / hy));
+    const dealii::Point<2> x(p[0] - lower[0], p[1] - lower[1]);
+    const int i = std::min<int>(nx - 1, std::max(0., x[0] / hx));
+    const int j = std::min<int>(ny - 1, std::max(0., x[1] / hy));
     // the position (i, j), or, for a point on its edge beside a hole, the
     // neighbouring position that shares the edge; the tolerance is the one
     // of PlateGeometry::contains
@@ -38,7 +40,7 @@ namespace NitscheContact
           if (ci < 0 || cj < 0 || ci >= static_cast<int>(nx) ||
               cj >= static_cast<int>(ny))
             continue;
-          const double ux = (p[0] - ci * hx) / hx, uy = (p[1] - cj * hy) / hy;
+          const double ux = (x[0] - ci * hx) / hx, uy = (x[1] - cj * hy) / hy;
           if (ux < -slack / hx || ux > 1. + slack / hx || uy < -slack / hy ||
               uy > 1. + slack / hy)
             continue;

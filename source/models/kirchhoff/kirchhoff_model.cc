@@ -5,6 +5,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
 
 #include <nitsche_contact/model_registry.h>
 #include <nitsche_contact/models/kirchhoff/kirchhoff_model.h>
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <sstream>
 
 namespace NitscheContact
 {
@@ -34,6 +36,71 @@ namespace NitscheContact
         {
           return false;
         }
+    }
+
+    /// The vertices of a cell, for messages.
+    std::string
+    vertex_list(const Triangulation<2>::cell_iterator &cell)
+    {
+      std::ostringstream s;
+      for (const unsigned int v : cell->vertex_indices())
+        s << (v ? ", (" : "(") << cell->vertex(v) << ")";
+      return s.str();
+    }
+
+    /// The error for a mesh-file cell the Kirchhoff plate cannot hold.
+    [[noreturn]] void
+    refuse_cell(const std::string &file, const std::string &why)
+    {
+      bad_value("Geometry/Mesh file", file,
+                "the Kirchhoff plate's bicubic Hermite element is C1 only on "
+                "a uniform grid of equal axis-parallel rectangles, and " +
+                  why +
+                  "; the Mindlin and the membrane models solve every "
+                  "quadrilateral mesh ('Model = mindlin')");
+    }
+
+    /// Rebuild the coarse mesh with the vertices of every cell in the
+    /// order of FE_BicubicHermite (vertex 0 its lower left corner, vertex 3
+    /// its upper right); a cell that is not an axis-parallel rectangle is
+    /// an input error.
+    void
+    order_vertices_along_axes(Triangulation<2> &tria, const std::string &file)
+    {
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          const auto box = cell->bounding_box().get_boundary_points();
+          const double scale = box.first.distance(box.second);
+          for (const unsigned int v : cell->vertex_indices())
+            for (unsigned int d = 0; d < 2; ++d)
+              if (std::abs(cell->vertex(v)[d] - box.first[d]) > 1e-10 * scale &&
+                  std::abs(cell->vertex(v)[d] - box.second[d]) > 1e-10 * scale)
+                refuse_cell(file, "the cell with the vertices " +
+                                    vertex_list(cell) +
+                                    " is not an axis-parallel rectangle");
+        }
+      auto [vertices, cells, boundary] =
+        GridTools::get_coarse_mesh_description(tria);
+      for (auto &cell : cells)
+        {
+          const auto corners = cell.vertices;
+          for (const unsigned int v : corners)
+            {
+              // the position of v in the cell: left or right, lower or upper
+              unsigned int position = 0;
+              for (unsigned int d = 0; d < 2; ++d)
+                for (const unsigned int w : corners)
+                  if (vertices[w][d] < vertices[v][d] -
+                                         1e-10 * vertices[w].distance(vertices[v]))
+                    {
+                      position |= 1u << d;
+                      break;
+                    }
+              cell.vertices[position] = v;
+            }
+        }
+      tria.clear();
+      tria.create_triangulation(vertices, cells, boundary);
     }
   } // namespace
 
@@ -126,11 +193,27 @@ namespace NitscheContact
   void
   KirchhoffModel::make_grid()
   {
-    // boundary ids 0, 1, 2, 3 on x = 0, x = Lx, y = 0, y = Ly
+    // the built-in shapes: boundary ids 0, 1, 2, 3 on x = 0, x = Lx,
+    // y = 0, y = Ly
     prm.make_coarse_mesh(triangulation);
-    triangulation.refine_global(prm.initial_refinement);
-    nx = prm.subdivisions[0] << prm.initial_refinement;
-    ny = prm.subdivisions[1] << prm.initial_refinement;
+    grid_lower = prm.geometry.lower;
+    grid_upper = prm.geometry.upper;
+    if (prm.geometry.shape == PlateShape::mesh_file)
+      {
+        order_vertices_along_axes(triangulation, prm.geometry.mesh_file_name());
+        triangulation.refine_global(prm.initial_refinement);
+        // the grid of the first cell's size over the mesh's bounding box
+        const Tensor<1, 2> h =
+          FE_BicubicHermite<2>::cell_extents(triangulation.begin_active());
+        nx = std::max(1l, std::lround((grid_upper[0] - grid_lower[0]) / h[0]));
+        ny = std::max(1l, std::lround((grid_upper[1] - grid_lower[1]) / h[1]));
+      }
+    else
+      {
+        triangulation.refine_global(prm.initial_refinement);
+        nx = prm.subdivisions[0] << prm.initial_refinement;
+        ny = prm.subdivisions[1] << prm.initial_refinement;
+      }
   }
 
 
@@ -179,20 +262,27 @@ namespace NitscheContact
   void
   KirchhoffModel::number_cells()
   {
-    // the mesh must be the uniform one: the cells of the nx x ny grid of
-    // the rectangle on the plate, in lexicographic order
-    const double hx = prm.length_x / nx, hy = prm.length_y / ny;
+    // the mesh must be a uniform one: cells of the nx x ny grid of the
+    // plate's bounding box, in lexicographic order (a mesh file may have
+    // other cells)
+    const double hx = (grid_upper[0] - grid_lower[0]) / nx,
+                 hy = (grid_upper[1] - grid_lower[1]) / ny;
     std::vector<DoFHandler<2>::active_cell_iterator> grid(nx * ny);
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         const Tensor<1, 2> h = FE_BicubicHermite<2>::cell_extents(cell);
-        AssertThrow(std::abs(h[0] - hx) < 1e-10 * hx &&
-                      std::abs(h[1] - hy) < 1e-10 * hy,
-                    ExcMessage("The Kirchhoff model needs a uniform mesh."));
-        const unsigned int ix =
-          static_cast<unsigned int>(cell->center()[0] / hx);
-        const unsigned int iy =
-          static_cast<unsigned int>(cell->center()[1] / hy);
+        const double x = (cell->vertex(0)[0] - grid_lower[0]) / hx,
+                     y = (cell->vertex(0)[1] - grid_lower[1]) / hy;
+        const long ix = std::lround(x), iy = std::lround(y);
+        if (std::abs(h[0] - hx) > 1e-8 * hx || std::abs(h[1] - hy) > 1e-8 * hy ||
+            std::abs(x - ix) > 1e-8 || std::abs(y - iy) > 1e-8)
+          refuse_cell(prm.geometry.mesh_file_name(),
+                      "the cell with the vertices " + vertex_list(cell) +
+                        " does not fill a position of the grid of " +
+                        number_to_string(hx) + " x " + number_to_string(hy) +
+                        " cells from (" + number_to_string(grid_lower[0]) +
+                        ", " + number_to_string(grid_lower[1]) +
+                        ") that the mesh's first cell gives");
         grid[ix + nx * iy] = cell;
       }
     cells.clear();

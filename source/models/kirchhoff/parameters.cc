@@ -200,10 +200,12 @@ namespace NitscheContact
     // the checks of the common input that depend on the model: a plate
     // cell refines into 4, the contact surface is the bottom face or the
     // mid-plane, and a compliant obstacle may lie above a supported edge
-    require_shape(prm.geometry, cartesian_shapes, "the model 'kirchhoff'",
+    std::vector<PlateShape> shapes = cartesian_shapes;
+    shapes.push_back(PlateShape::mesh_file);
+    require_shape(prm.geometry, shapes, "the model 'kirchhoff'",
                   "its element is C1 on a uniform grid of axis-parallel "
-                  "rectangles only; the Mindlin and the membrane models "
-                  "solve every shape");
+                  "rectangles only (a mesh file of such cells); the Mindlin "
+                  "and the membrane models solve every shape");
     if (use_multigrid)
       require_shape(prm.geometry, {PlateShape::rectangle},
                     "'Kirchhoff/Linear solver/Type = multigrid'",

@@ -44,7 +44,7 @@ namespace NitscheContact
                             Point<2>                        &unit) const
   {
     const auto where =
-      UniformPlateGrid(nx, ny, prm.length_x, prm.length_y, &cell_at).locate(p);
+      UniformPlateGrid(nx, ny, grid_lower, grid_upper, &cell_at).locate(p);
     if (!where)
       return false;
     cell_index = where->cell;

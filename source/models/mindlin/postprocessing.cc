@@ -301,7 +301,7 @@ namespace NitscheContact
                                                    &dof_handler);
       }
     const auto where =
-      UniformPlateGrid(nx, ny, prm.length_x, prm.length_y, &cell_at).locate(p);
+      UniformPlateGrid(nx, ny, Point<2>(), Point<2>(prm.length_x, prm.length_y), &cell_at).locate(p);
     if (!where)
       return dof_handler.end();
     unit_point = where->unit;
@@ -316,7 +316,8 @@ namespace NitscheContact
     // cell_grid holds every active cell, on a uniform grid in grid order
     if (!uniform_cells)
       return cell->active_cell_index();
-    const auto where = UniformPlateGrid(nx, ny, prm.length_x, prm.length_y,
+    const auto where = UniformPlateGrid(nx, ny, Point<2>(),
+                                        Point<2>(prm.length_x, prm.length_y),
                                         &cell_at)
                          .locate(cell->center());
     return where->cell;

@@ -20,9 +20,10 @@
 
 namespace NitscheContact
 {
-  /// The uniform nx x ny grid of rectangular cells on [0, Lx] x [0, Ly] of
-  /// the plate models, positions numbered with x running fastest; on the
-  /// L-shape and the rectangle with hole some positions hold no cell.
+  /// The uniform nx x ny grid of rectangular cells on the box [lower,
+  /// upper] of the plate models, positions numbered with x running fastest;
+  /// on the L-shape, the rectangle with hole and a mesh file some positions
+  /// hold no cell.
   class UniformPlateGrid
   {
   public:
@@ -31,8 +32,8 @@ namespace NitscheContact
     /// position holds the cell of the same index).
     UniformPlateGrid(unsigned int                     nx,
                      unsigned int                     ny,
-                     double                           length_x,
-                     double                           length_y,
+                     const dealii::Point<2>          &lower,
+                     const dealii::Point<2>          &upper,
                      const std::vector<unsigned int> *cell_at = nullptr);
 
     static constexpr unsigned int no_cell =
@@ -53,7 +54,7 @@ namespace NitscheContact
 
   private:
     unsigned int                     nx = 1, ny = 1;
-    double                           length_x = 1., length_y = 1.;
+    dealii::Point<2>                 lower, upper;
     const std::vector<unsigned int> *cell_at;
   };
 

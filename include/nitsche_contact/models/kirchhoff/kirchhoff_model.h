@@ -442,10 +442,12 @@ namespace NitscheContact
     dealii::MappingCartesian<2>    mapping;
     dealii::AffineConstraints<double> constraints;
     dealii::QGauss<2>              quadrature;
-    unsigned int nx = 0, ny = 0; ///< cells per direction of the rectangle
+    unsigned int nx = 0, ny = 0; ///< cells per direction of the grid
+    /// the grid's box: the rectangle, or the bounding box of a mesh file
+    dealii::Point<2> grid_lower, grid_upper;
     /// Active cells in lexicographic order of their (ix, iy) position in
-    /// the nx x ny grid of the rectangle (the L-shape and the rectangle
-    /// with hole leave out some positions).
+    /// the nx x ny grid (the L-shape, the rectangle with hole and a mesh
+    /// file may leave out some positions).
     std::vector<dealii::DoFHandler<2>::active_cell_iterator> cells;
     /// per grid position ix + nx iy: the index in `cells`, or no_cell
     std::vector<unsigned int> cell_at;
