@@ -21,6 +21,17 @@ plate: t = 0.01, E = 2e5, nu = 0.3, q = -0.02, a rigid plane below).
   four corners in turn, gives the built-in run's reaction and (moved)
   probes to round-off: the plate is the same, the obstacle flat and the
   load constant (input_errors checks the refused mesh files).
+- The 3D model on the L-shape (the plate's mesh extruded, one Q2 layer,
+  nested in plane from 8^2 to 32^2 cells of the square's grid) converges
+  to the Kirchhoff plate of the same shape (the model error is O((t/a)^2)
+  = 1e-6): as on the square (models_agree) the coarse 3D mesh is stiffer,
+  so its reaction and |w(1, 5)| lie below Kirchhoff's, within the bounds
+  models_agree takes for the square's 16^2 mesh (4 %, 11 %; measured -2.1 %
+  and -2.6 % on 32^2), and the 16^2 -> 32^2 step shrinks both differences
+  by at least 2.5x (measured 3.9x and 3.7x); the solution has the mesh's
+  symmetry; the two-level solver gives the direct solver's reaction
+  to 1e-6. On the rectangle with hole 2 ranks give the 1-rank run to
+  1e-5 (elasticity_mpi's tolerance), and the simply supported hole edge stays at 0.
 - The multigrids refuse these shapes with an error naming the direct
   solver (input_errors checks the messages of the other shapes)."""
 import os, sys
@@ -100,6 +111,71 @@ close(f["contact_force"], L["kirchhoff"]["contact_force"], 1e-10,
 for j in range(6):
     close(f["probes"][j], L["kirchhoff"]["probes"][j], 1e-10,
           "Kirchhoff L-shape: probe %d, moved mesh file vs built-in" % j)
+
+# the 3D model on the L-shape: the plate's mesh extruded (one Q2 layer),
+# nested in plane 8^2 -> 32^2 cells of the square's grid, rigid obstacle
+SOLID = """set Model = elasticity
+subsection Geometry
+  %s
+  set Boundary conditions = %s
+  set Subdivisions = 8, 8, 1
+  set Number of cycles = %d
+end
+subsection Obstacle
+  set Level = %r
+end
+subsection Elasticity
+  set Refine through thickness = false
+end
+subsection Output
+  set Probe points = %s
+end
+"""
+probes = "2.5, 2.5; 1, 5; 5, 1; 2.5, 7.5; 7.5, 2.5; 5, 5"
+s3d, _ = run(args, "L_3d", SOLID % ("set Shape = L-shape", "all: clamped", 3, -0.3, probes),
+             pinned="rigid")
+check(all(c["converged"] for c in s3d["cycles"]), "L-shape 3D: every cycle converged")
+k = L["kirchhoff"]
+diff = [(c["contact_force"] - k["contact_force"]) / k["contact_force"] for c in s3d["cycles"]]
+bend = [(c["probes"][1] - k["probes"][1]) / k["probes"][1] for c in s3d["cycles"]]
+check(-0.04 <= diff[2] <= 0., "L-shape 3D 32^2: reaction %.3f %% of Kirchhoff's, in [-4 %%, 0]"
+      % (100 * diff[2]))
+check(-0.11 <= bend[2] <= 0., "L-shape 3D 32^2: |w(1,5)| %.3f %% of Kirchhoff's, in [-11 %%, 0]"
+      % (100 * bend[2]))
+check(abs(diff[1]) >= 2.5 * abs(diff[2]) and abs(bend[1]) >= 2.5 * abs(bend[2]),
+      "L-shape 3D: the 16^2 -> 32^2 step shrinks the differences to Kirchhoff by at least "
+      "2.5x (reaction %.2f %% -> %.2f %%, w(1,5) %.2f %% -> %.2f %%)"
+      % (100 * diff[1], 100 * diff[2], 100 * bend[1], 100 * bend[2]))
+s2l, _ = run(args, "L_3d_two_level",
+             SOLID % ("set Shape = L-shape", "all: clamped", 3, -0.3, probes) +
+             "subsection Elasticity\n  subsection Linear solver\n    set Type = two-level\n"
+             "  end\nend\n", pinned="rigid")
+close(s2l["cycles"][-1]["contact_force"], s3d["cycles"][-1]["contact_force"], 1e-6,
+      "L-shape 3D: reaction, two-level solver vs direct")
+w = s3d["cycles"][-1]["probes"]
+# (the nonlinear tolerance 1e-6 leaves differences of about 1e-8 in w)
+check(abs(w[1] - w[2]) < 1e-7 and abs(w[3] - w[4]) < 1e-7 and w[5] == 0,
+      "L-shape 3D: w(1,5) = w(5,1) (%.10f, %.10f), w(2.5,7.5) = w(7.5,2.5), w(5,5) = %g"
+      % (w[1], w[2], w[5]))
+
+# the 3D model on the rectangle with hole, on 1 and 2 ranks
+probes = "3.75, 5; 5, 3.75; 3, 5; 5, 3; 1, 5; 5, 1; 2, 2"
+hole3d = {}
+for ranks in (1, 2):
+    hole3d[ranks], _ = run(args, "hole_3d_np%d" % ranks,
+                           SOLID % ("set Shape = rectangle with hole\n  set Hole size = 2.5, 2.5",
+                                    "4: simply supported; all: clamped", 2, -0.4, probes),
+                           np=ranks, pinned="rigid")
+a, b = hole3d[1]["cycles"][-1], hole3d[2]["cycles"][-1]
+# (as in elasticity_mpi: the partition changes the round-off, which the
+# nonlinear tolerance 1e-6 leaves in the solution)
+close(b["contact_force"], a["contact_force"], 1e-5, "hole 3D: reaction, 2 ranks vs 1")
+for j in range(7):
+    close(b["probes"][j], a["probes"][j], 1e-5, "hole 3D: probe %d, 2 ranks vs 1" % j)
+w = a["probes"]
+check(w[0] == 0 and w[1] == 0 and abs(w[2] - w[3]) < 1e-7 and abs(w[4] - w[5]) < 1e-7,
+      "hole 3D: the supported hole edge stays at 0 (%g, %g), w(3,5) = w(5,3), w(1,5) = w(5,1)"
+      % (w[0], w[1]))
 
 # the rectangle with hole
 probes = "3.75, 5; 5, 3.75; 3, 5; 5, 3; 1, 5; 5, 1; 2, 2"

@@ -203,7 +203,7 @@ namespace NitscheContact
     const unsigned int n = comp.size();
     Vector<double>     traction(2);
     for (const unsigned int f : cell->face_indices())
-      if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == 5)
+      if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == top_id)
         {
           fvf.reinit(cell, f);
           for (unsigned int q = 0; q < fvf.n_quadrature_points; ++q)

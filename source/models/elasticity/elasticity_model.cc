@@ -31,8 +31,18 @@ namespace NitscheContact
     // the checks of the common input that depend on the model: a
     // hexahedron refines into 8, r = gamma0 E / t, and the contact surface
     // is the bottom face
-    require_shape(prm.geometry, {PlateShape::rectangle}, "the model 'elasticity'",
-                  "the Mindlin and the membrane models solve every shape");
+    require_shape(prm.geometry, cartesian_shapes, "the model 'elasticity'",
+                  "its mesh is the rectangle's grid extruded through the "
+                  "thickness; the Mindlin and the membrane models solve "
+                  "every shape");
+    for (const types::boundary_id b : prm.geometry.boundary_ids)
+      if (b >= contact_id && prm.boundary_condition(b) == EdgeCondition::symmetry)
+        bad_value("Geometry/Boundary conditions",
+                  prm.geometry.conditions.text(),
+                  "the 3D model holds 'symmetry' (the normal displacement "
+                  "zero) on the edges x = 0, x = Lx, y = 0, y = Ly (ids 0 to "
+                  "3) only, not on the id " + std::to_string(b) +
+                    " of the edges of the " + prm.geometry.shape_name());
     prm.check_first_mesh_size(8);
     prm.use_model_gamma0(60.);
     prm.check_magnitudes(prm.gamma0 * prm.youngs_modulus / prm.thickness);

@@ -1,6 +1,7 @@
 // Elasticity model: mesh, DoFs and constraints.
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/vector_tools.h>
@@ -20,14 +21,17 @@ namespace NitscheContact
   {
     const double       z0     = -0.5 * prm.thickness;
     const unsigned int factor = refine_through_thickness ? 1u : (1u << cycle);
-    GridGenerator::subdivided_hyper_rectangle(
-      triangulation,
-      {prm.subdivisions[0] * factor,
-       prm.subdivisions[1] * factor,
-       prm.subdivisions[2]},
-      Point<3>(0., 0., z0),
-      Point<3>(prm.length_x, prm.length_y, -z0),
-      /*colorize: ids 0..5 = x-, x+, y-, y+, z-, z+*/ true);
+    if (prm.geometry.is_rectangle())
+      GridGenerator::subdivided_hyper_rectangle(
+        triangulation,
+        {prm.subdivisions[0] * factor,
+         prm.subdivisions[1] * factor,
+         prm.subdivisions[2]},
+        Point<3>(0., 0., z0),
+        Point<3>(prm.length_x, prm.length_y, -z0),
+        /*colorize: ids 0..5 = x-, x+, y-, y+, z-, z+*/ true);
+    else
+      extrude_plate(factor);
     triangulation.refine_global(prm.initial_refinement);
     for (unsigned int step = 0; step < local_refinement_steps; ++step)
       {
@@ -62,6 +66,34 @@ namespace NitscheContact
             "steps = 0')");
         triangulation.execute_coarsening_and_refinement();
       }
+  }
+
+  void
+  ElasticityModel::extrude_plate(const unsigned int factor)
+  {
+    // the plate's mesh (the cells of the rectangle's grid on the plate)
+    // extruded through the thickness in 'Subdivisions'[2] layers; the side
+    // faces keep the plate's boundary ids (side_id), the bottom gets
+    // contact_id and the top top_id
+    const double     z0 = -0.5 * prm.thickness;
+    Triangulation<2> plane;
+    prm.geometry.make_coarse_mesh(
+      plane, {prm.subdivisions[0] * factor, prm.subdivisions[1] * factor});
+    Triangulation<3> solid;
+    GridGenerator::extrude_triangulation(plane, prm.subdivisions[2] + 1,
+                                         prm.thickness, solid);
+    GridTools::shift(Tensor<1, 3>({0., 0., z0}), solid);
+    const double tolerance = 1e-6 * prm.thickness;
+    for (const auto &face : solid.active_face_iterators())
+      if (face->at_boundary())
+        {
+          const double z = face->center()[2];
+          face->set_boundary_id(std::abs(z - z0) < tolerance  ? contact_id :
+                                std::abs(z + z0) < tolerance ? top_id :
+                                side_id(face->boundary_id()));
+        }
+    auto [vertices, cells, faces] = GridTools::get_coarse_mesh_description(solid);
+    triangulation.create_triangulation(vertices, cells, faces);
   }
 
   void
@@ -182,7 +214,7 @@ namespace NitscheContact
     constraints.reinit(locally_relevant);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
     const FEValuesExtractors::Scalar ux(0), uy(1), uz(2);
-    for (unsigned int e = 0; e < 4; ++e)
+    for (const types::boundary_id e : prm.geometry.boundary_ids)
       {
         ComponentMask mask(3, false);
         switch (prm.boundary_condition(e))
@@ -201,11 +233,11 @@ namespace NitscheContact
           }
         if (mask.n_selected_components() > 0)
           VectorTools::interpolate_boundary_values(
-            mapping, dof_handler, e, Functions::ZeroFunction<3>(3),
+            mapping, dof_handler, side_id(e), Functions::ZeroFunction<3>(3),
             constraints, mask);
       }
     if (top_clamped)
-      VectorTools::interpolate_boundary_values(mapping, dof_handler, 5,
+      VectorTools::interpolate_boundary_values(mapping, dof_handler, top_id,
                                                Functions::ZeroFunction<3>(3),
                                                constraints);
     pin_in_plane_rigid_motions();
@@ -249,7 +281,7 @@ namespace NitscheContact
     if (prm.friction > 0. || top_clamped)
       return;
     bool x_symmetry = false, y_symmetry = false;
-    for (unsigned int e = 0; e < 4; ++e)
+    for (const types::boundary_id e : prm.geometry.boundary_ids)
       if (prm.boundary_condition(e) == EdgeCondition::clamped)
         return;
       else if (prm.boundary_condition(e) == EdgeCondition::symmetry)

@@ -12,6 +12,8 @@ namespace NitscheContact
   std::string
   ElasticityModel::plate_predictor_precondition() const
   {
+    if (!prm.geometry.is_rectangle())
+      return "the plate predictor solves the rectangle only";
     if (!refinement_box.empty() || local_refinement_steps > 0)
       return "the plate lives on the uniform in-plane mesh; it needs "
              "no 'Refinement box' and 'Local refinement steps = 0'";

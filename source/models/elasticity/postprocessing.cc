@@ -213,6 +213,8 @@ namespace NitscheContact
     for (unsigned int p = 0; p < points.size(); ++p)
       {
         const Point<3> x(points[p][0], points[p][1], -0.5 * prm.thickness);
+        if (!prm.geometry.contains(points[p]))
+          continue;
         try
           {
             const auto found =
@@ -277,6 +279,8 @@ namespace NitscheContact
     for (unsigned int p = 0; p < points.size(); ++p)
       {
         const Point<3> x(points[p][0], points[p][1], 0.);
+        if (!prm.geometry.contains(points[p]))
+          continue;
         try
           {
             auto found = GridTools::find_active_cell_around_point(cache, x, hint);

@@ -154,6 +154,16 @@ namespace NitscheContact
 
     /// Boundary id of the contact face (bottom, x3 = -t/2).
     static constexpr dealii::types::boundary_id contact_id = 4;
+    /// Boundary id of the top face (x3 = t/2).
+    static constexpr dealii::types::boundary_id top_id = 5;
+    /// The id of the side faces over the plate's boundary id b (the ids of
+    /// the rectangle's edges stay, the others move past the bottom and
+    /// the top).
+    static dealii::types::boundary_id
+    side_id(const dealii::types::boundary_id b)
+    {
+      return b < contact_id ? b : b + 2;
+    }
 
     /// For the finite-difference checks (tests/unit/model_consistency):
     /// the current iterate U (may be modified; assemble() evaluates at it;
@@ -270,6 +280,10 @@ namespace NitscheContact
     /// refinements.
     void
     make_grid(unsigned int cycle);
+    /// make_grid() on the L-shape and the rectangle with hole: the plate's
+    /// mesh with 'factor' times its subdivisions, extruded.
+    void
+    extrude_plate(unsigned int factor);
     /// Replace the mesh by the one of 'cycle' with the in-plane
     /// subdivisions doubled, and U by its interpolant there (exact: the
     /// meshes are nested in plane and have the same layers). Needs the
