@@ -478,7 +478,11 @@ CASES.append(("Kirchhoff on a mesh file of unequal rectangles",
               "set Model = kirchhoff\nsubsection Geometry\n  set Shape = mesh file\n"
               "  set Mesh file = graded.msh\nend",
               ["Geometry/Mesh file", "graded.msh", "(0.625 0), (2.5 0), (0.625 2.5), (2.5 2.5)",
-               "does not fill a position of the grid of 0.625 x 2.5 cells"]))
+               "is not of the size 0.625 x 2.5 of the mesh's first cell"]))
+CASES.append(("the 3D plate predictor asked for on the L-shape",
+              "subsection Geometry\n  set Shape = L-shape\n  set Subdivisions = 2, 2, 1\nend\n"
+              "subsection Elasticity\n  set Plate predictor = true\nend",
+              ["Elasticity/Plate predictor", "'true'", "rectangle only"]))
 CASES.append(("boundary id 1000 on the rectangle",
               "subsection Geometry\n  set Boundary conditions = 1000: free; "
               "all: clamped\nend",

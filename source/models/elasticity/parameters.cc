@@ -98,7 +98,8 @@ namespace NitscheContact
         "true: every cycle starts from the solution of a Mindlin plate "
         "(MITC4, frictionless, theta = 1) on the in-plane nodes of the "
         "cycle's mesh, lifted to 3D, instead of from the previous cycle's "
-        "solution; it needs the uniform mesh, 'Top face = free' and "
+        "solution; it needs the rectangle, the uniform mesh, 'Top face = "
+        "free' and "
         "'Nonlinear solver/Load steps = 1'. 'auto' uses it where these "
         "hold and says in the log why not otherwise; false starts from the "
         "previous cycle.");

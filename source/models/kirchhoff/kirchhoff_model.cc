@@ -84,21 +84,19 @@ namespace NitscheContact
       for (auto &cell : cells)
         {
           const auto corners = cell.vertices;
+          Point<2>   centre;
+          for (const unsigned int v : corners)
+            centre += 0.25 * vertices[v];
           for (const unsigned int v : corners)
             {
-              // the position of v in the cell: left or right, lower or upper
-              unsigned int position = 0;
-              for (unsigned int d = 0; d < 2; ++d)
-                for (const unsigned int w : corners)
-                  if (vertices[w][d] < vertices[v][d] -
-                                         1e-10 * vertices[w].distance(vertices[v]))
-                    {
-                      position |= 1u << d;
-                      break;
-                    }
+              // the position of v in the cell: left or right of the
+              // centre, below or above it
+              const unsigned int position = (vertices[v][0] > centre[0] ? 1u : 0u) +
+                                            (vertices[v][1] > centre[1] ? 2u : 0u);
               cell.vertices[position] = v;
             }
         }
+
       tria.clear();
       tria.create_triangulation(vertices, cells, boundary);
     }
@@ -205,8 +203,27 @@ namespace NitscheContact
         // the grid of the first cell's size over the mesh's bounding box
         const Tensor<1, 2> h =
           FE_BicubicHermite<2>::cell_extents(triangulation.begin_active());
-        nx = std::max(1l, std::lround((grid_upper[0] - grid_lower[0]) / h[0]));
-        ny = std::max(1l, std::lround((grid_upper[1] - grid_lower[1]) / h[1]));
+        for (const auto &cell : triangulation.active_cell_iterators())
+          {
+            const Tensor<1, 2> e = FE_BicubicHermite<2>::cell_extents(cell);
+            if (std::abs(e[0] - h[0]) > 1e-8 * h[0] ||
+                std::abs(e[1] - h[1]) > 1e-8 * h[1])
+              refuse_cell(prm.geometry.mesh_file_name(),
+                          "the cell with the vertices " + vertex_list(cell) +
+                            " is not of the size " + number_to_string(h[0]) +
+                            " x " + number_to_string(h[1]) +
+                            " of the mesh's first cell");
+          }
+        const double positions_x = std::round((grid_upper[0] - grid_lower[0]) / h[0]),
+                     positions_y = std::round((grid_upper[1] - grid_lower[1]) / h[1]);
+        if (positions_x * positions_y > 1e7)
+          refuse_cell(prm.geometry.mesh_file_name(),
+                      "the grid of its cells over the mesh's bounding box has " +
+                        number_to_string(positions_x) + " x " +
+                        number_to_string(positions_y) +
+                        " positions, more than 1e7");
+        nx = std::max(1., positions_x);
+        ny = std::max(1., positions_y);
       }
     else
       {
@@ -274,15 +291,22 @@ namespace NitscheContact
         const double x = (cell->vertex(0)[0] - grid_lower[0]) / hx,
                      y = (cell->vertex(0)[1] - grid_lower[1]) / hy;
         const long ix = std::lround(x), iy = std::lround(y);
-        if (std::abs(h[0] - hx) > 1e-8 * hx || std::abs(h[1] - hy) > 1e-8 * hy ||
-            std::abs(x - ix) > 1e-8 || std::abs(y - iy) > 1e-8)
+        const bool off_grid =
+          std::abs(h[0] - hx) > 1e-8 * hx || std::abs(h[1] - hy) > 1e-8 * hy ||
+          std::abs(x - ix) > 1e-8 || std::abs(y - iy) > 1e-8 ||
+          grid[ix + nx * iy].state() == IteratorState::valid;
+        // (the built-in shapes are made of the grid's cells)
+        AssertThrow(!off_grid || prm.geometry.shape == PlateShape::mesh_file,
+                    ExcInternalError());
+        if (off_grid)
           refuse_cell(prm.geometry.mesh_file_name(),
                       "the cell with the vertices " + vertex_list(cell) +
                         " does not fill a position of the grid of " +
                         number_to_string(hx) + " x " + number_to_string(hy) +
                         " cells from (" + number_to_string(grid_lower[0]) +
                         ", " + number_to_string(grid_lower[1]) +
-                        ") that the mesh's first cell gives");
+                        ") that the mesh's first cell gives, or overlaps "
+                        "another cell");
         grid[ix + nx * iy] = cell;
       }
     cells.clear();
