@@ -73,7 +73,11 @@ namespace NitscheContact
       {"E", s(prm.youngs_modulus)},
       {"nu", s(prm.poisson_ratio)},
       {"thickness", s(prm.thickness)},
-      {"plate", s(prm.length_x) + " x " + s(prm.length_y)},
+      {"plate", prm.geometry.is_rectangle() ?
+                  s(prm.length_x) + " x " + s(prm.length_y) :
+                  // "(the L-shape ...)" without its parentheses
+                  prm.geometry.description().substr(
+                    1, prm.geometry.description().size() - 2)},
       {"boundary conditions", prm.geometry.conditions.text()},
       {"theta", s(prm.theta)},
       {"gamma0", s(prm.gamma0)},
