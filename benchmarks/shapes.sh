@@ -9,8 +9,9 @@
 # rectangle, the L-shape and the rectangle with hole share one element data
 # per cycle, the disk, the annulus and the mesh file compute it per cell
 # (doc/mindlin.md). kirchhoff: the Cartesian shapes from 16^2 to 128^2
-# cells. elasticity: the Cartesian shapes, one Q2 layer, from 8^2 to 64^2
-# cells in plane. Usage:
+# cells. elasticity: every shape, one Q2 layer, the Cartesian ones from 8^2
+# to 64^2 cells in plane, the others refined in plane over as many cycles
+# as give about 100,000 DoFs. Usage:
 #   benchmarks/shapes.sh [path/to/nitsche-contact] [refinements] [model]
 # The second argument adds global refinements to every shape (default 0;
 # 1 gives about four times the DoFs), the third is the model (default
@@ -33,8 +34,8 @@ case "$model" in
 esac
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-# shape entries and the initial refinement (Mindlin: about 28^2 cells on
-# the first cycle)
+# shape entries, the initial refinement (Mindlin: about 28^2 cells on the
+# first cycle) and the number of cycles
 if [ "$model" = mindlin ]; then
   shapes=(
     "rectangle|set Shape = rectangle|0"
@@ -43,6 +44,15 @@ if [ "$model" = mindlin ]; then
     "disk|set Shape = disk|3"
     "annulus|set Shape = annulus\n  set Inner radius = 2\n  set Boundary conditions = 0: clamped; 1: free|3"
     "mesh file|set Shape = mesh file\n  set Mesh file = $here/parameters/meshes/plate_with_hole.msh\n  set Boundary conditions = 1: clamped; 2: free|1"
+  )
+elif [ "$model" = elasticity ]; then
+  shapes=(
+    "rectangle|set Shape = rectangle|0"
+    "L-shape|set Shape = L-shape|0"
+    "rectangle with hole|$hole|0"
+    "disk|set Shape = disk|0|5"
+    "annulus|set Shape = annulus\n  set Inner radius = 2\n  set Boundary conditions = 0: clamped; 1: free|0|5"
+    "mesh file|set Shape = mesh file\n  set Mesh file = $here/parameters/meshes/plate_with_hole.msh\n  set Boundary conditions = 1: clamped; 2: free|0|3"
   )
 else
   shapes=(
@@ -53,10 +63,10 @@ else
 fi
 printf '%-20s %9s %4s %8s %9s %8s %9s %8s %9s\n' shape dofs its setup assembly solve postproc wall "peak MB"
 for entry in "${shapes[@]}"; do
-  IFS='|' read -r name geometry refinement <<< "$entry"
+  IFS='|' read -r name geometry refinement cycles <<< "$entry"
   tag=${name// /_}
-  printf 'set Model = %s\nsubsection Geometry\n  set Subdivisions = %s\n  %b\n  set Initial refinement = %d\n  set Number of cycles = 4\nend\n%b\nsubsection Output\n  set Directory = %s\n  set Format = none\nend\n' \
-    "$model" "$subdivisions" "$geometry" $((refinement + extra)) "$settings" "$work/$tag" > "$work/$tag.prm"
+  printf 'set Model = %s\nsubsection Geometry\n  set Subdivisions = %s\n  %b\n  set Initial refinement = %d\n  set Number of cycles = %d\nend\n%b\nsubsection Output\n  set Directory = %s\n  set Format = none\nend\n' \
+    "$model" "$subdivisions" "$geometry" $((refinement + extra)) "${cycles:-4}" "$settings" "$work/$tag" > "$work/$tag.prm"
   start=$(date +%s.%N)
   /usr/bin/time -f '%M' -o "$work/$tag.mem" "$exe" "$work/$tag.prm" > "$work/$tag.log" 2>&1 ||
     { echo "benchmarks/shapes.sh: $name failed:"; tail -20 "$work/$tag.log"; exit 1; }

@@ -6,6 +6,7 @@
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/manifold.h>
+#include <deal.II/grid/manifold_lib.h>
 
 #include <nitsche_contact/geometry/plate_geometry.h>
 #include <nitsche_contact/parameters/input_checks.h>
@@ -381,6 +382,40 @@ namespace NitscheContact
         default:
           make_cartesian_mesh(tria, {{subdivisions[0], subdivisions[1]}});
       }
+  }
+
+
+
+  void
+  PlateGeometry::make_refined_plane(
+    Triangulation<2>                &plane,
+    const std::vector<unsigned int> &subdivisions,
+    const unsigned int               refinements) const
+  {
+    Triangulation<2> coarse_mesh;
+    make_coarse_mesh(coarse_mesh, subdivisions);
+    coarse_mesh.refine_global(refinements);
+    GridGenerator::flatten_triangulation(coarse_mesh, plane);
+  }
+
+
+
+  void
+  PlateGeometry::attach_cylinder_manifold(
+    Triangulation<3>                           &body,
+    const std::set<types::boundary_id>         &side_faces,
+    const types::manifold_id                    id) const
+  {
+    if (!has_curved_edges())
+      return;
+    for (const auto &cell : body.cell_iterators_on_level(0))
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() && side_faces.count(face->boundary_id()) > 0)
+          face->set_all_manifold_ids(id);
+    body.set_manifold(id, CylindricalManifold<3>(Tensor<1, 3>({0., 0., 1.}),
+                                                 Point<3>(center[0],
+                                                          center[1],
+                                                          0.)));
   }
 
 

@@ -360,10 +360,11 @@ CASES = [
      "set Model = kirchhoff\nsubsection Geometry\n  set Shape = disk\nend",
      ["Geometry/Shape", "'disk'", "'rectangle with hole' and 'mesh file' only",
       "Mindlin and the membrane"]),
-    ("the 3D model on a disk",
-     "subsection Geometry\n  set Shape = disk\n  set Subdivisions = 2, 2, 1\nend",
-     ["Geometry/Shape", "'disk'", "'L-shape' and 'rectangle with hole' only",
-      "Mindlin and the membrane"]),
+    ("the 3D model with symmetry on a disk",
+     "subsection Geometry\n  set Shape = disk\n  set Subdivisions = 2, 2, 1\n"
+     "  set Boundary conditions = all: symmetry\nend",
+     ["Geometry/Boundary conditions", "all: symmetry", "ids 0 to 3", "not on the id 0",
+      "Mindlin model"]),
     ("the 3D model with symmetry on the L-shape's inner edges",
      "subsection Geometry\n  set Shape = L-shape\n  set Subdivisions = 2, 2, 1\n"
      "  set Boundary conditions = 4: symmetry; all: clamped\nend",

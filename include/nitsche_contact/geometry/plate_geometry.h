@@ -102,6 +102,29 @@ namespace NitscheContact
     make_coarse_mesh(dealii::Triangulation<2>        &triangulation,
                      const std::vector<unsigned int> &subdivisions) const;
 
+    /// make_coarse_mesh() refined `refinements` times (along the manifolds
+    /// of curved edges) and flattened into a coarse mesh of the same cells,
+    /// with the boundary ids: the plane that a 3D body extrudes.
+    void
+    make_refined_plane(dealii::Triangulation<2>        &plane,
+                       const std::vector<unsigned int> &subdivisions,
+                       unsigned int                     refinements) const;
+
+    /// Whether the plate has circular edges (the disk and the annulus).
+    bool
+    has_curved_edges() const
+    {
+      return shape == PlateShape::disk || shape == PlateShape::annulus;
+    }
+    /// For a body extruded from the plate along x3 (a coarse mesh): the
+    /// cylindrical manifold around the plate's centre on the faces in
+    /// `side_faces` (lateral faces on the plate's circular edges), under
+    /// the manifold id `id`. Nothing for straight-edged plates.
+    void
+    attach_cylinder_manifold(dealii::Triangulation<3>     &body,
+                             const std::set<dealii::types::boundary_id> &side_faces,
+                             dealii::types::manifold_id    id) const;
+
     PlateShape shape = PlateShape::rectangle;
     /// 'Geometry/Boundary conditions'
     BoundaryConditions conditions;
@@ -124,6 +147,12 @@ namespace NitscheContact
 
     /// The bounding box of the plate.
     dealii::Point<2> lower, upper;
+    /// The centre of the bounding box.
+    dealii::Point<2>
+    box_center() const
+    {
+      return 0.5 * (lower + upper);
+    }
     /// 'Geometry/Mesh file' (for 'Shape = mesh file'), for messages.
     const std::string &
     mesh_file_name() const

@@ -219,8 +219,8 @@ namespace NitscheContact
               record.note(2., t[1], x);
               record.note(1., t[2], x);
               {
-                const double dx = x[0] - prm.length_x / 2,
-                             dy = x[1] - prm.length_y / 2,
+                const double dx = x[0] - prm.geometry.box_center()[0],
+                             dy = x[1] - prm.geometry.box_center()[1],
                              JxW = fvf.JxW(q);
                 record.in_plane[0] += t[0] * JxW;
                 record.in_plane[1] += t[1] * JxW;

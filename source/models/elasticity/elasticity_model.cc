@@ -22,7 +22,9 @@ namespace NitscheContact
     , linear_solver(read_linear_solver_parameters(ph))
     , triangulation(comm)
     , fe(FE_Q<3>(read_degree(ph)), 3)
-    , mapping(1)
+    // straight-edged cells are trilinear images of the unit cube; on
+    // circular edges the mapping has the element's degree
+    , mapping(common.geometry.has_curved_edges() ? read_degree(ph) : 1)
     , obstacle(common)
     , direct_solver(direct_solver_settings())
     , two_level("raise 'Contact/Nitsche gamma0' (its coercivity bound is "
@@ -31,18 +33,17 @@ namespace NitscheContact
     // the checks of the common input that depend on the model: a
     // hexahedron refines into 8, r = gamma0 E / t, and the contact surface
     // is the bottom face
-    require_shape(prm.geometry, cartesian_shapes, "the model 'elasticity'",
-                  "its mesh is the rectangle's grid extruded through the "
-                  "thickness; the Mindlin and the membrane models solve "
-                  "every shape");
     for (const types::boundary_id b : prm.geometry.boundary_ids)
-      if (b >= contact_id && prm.boundary_condition(b) == EdgeCondition::symmetry)
+      if (prm.boundary_condition(b) == EdgeCondition::symmetry &&
+          (b >= contact_id || !is_cartesian(prm.geometry.shape)))
         bad_value("Geometry/Boundary conditions",
                   prm.geometry.conditions.text(),
                   "the 3D model holds 'symmetry' (the normal displacement "
                   "zero) on the edges x = 0, x = Lx, y = 0, y = Ly (ids 0 to "
-                  "3) only, not on the id " + std::to_string(b) +
-                    " of the edges of the " + prm.geometry.shape_name());
+                  "3) of the rectangle, the L-shape and the rectangle with "
+                  "hole only, not on the id " + std::to_string(b) +
+                    " of the edges of the " + prm.geometry.shape_name() +
+                    "; the Mindlin model holds it on any edge");
     prm.check_first_mesh_size(8);
     prm.use_model_gamma0(60.);
     prm.check_magnitudes(prm.gamma0 * prm.youngs_modulus / prm.thickness);
@@ -110,7 +111,7 @@ namespace NitscheContact
   {
     if (cycle == 0)
       {
-        make_grid(0);
+        make_grid(triangulation, 0);
         dof_handler.reinit(triangulation);
         setup_dofs();
         solution = 0.;
@@ -119,7 +120,7 @@ namespace NitscheContact
       {
         // the start comes from the plate below: no transfer
         triangulation.clear();
-        make_grid(cycle);
+        make_grid(triangulation, cycle);
         setup_dofs();
       }
     else if (plate)

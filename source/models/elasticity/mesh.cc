@@ -4,12 +4,16 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/base/mpi_remote_point_evaluation.h>
+#include <deal.II/grid/manifold_lib.h>
 #include <deal.II/numerics/vector_tools.h>
+#include <deal.II/numerics/vector_tools_evaluate.h>
 
 #include <nitsche_contact/models/elasticity/elasticity_model.h>
 
 #include <array>
 #include <cmath>
+#include <set>
 #include <limits>
 
 namespace NitscheContact
@@ -17,13 +21,13 @@ namespace NitscheContact
   using namespace dealii;
 
   void
-  ElasticityModel::make_grid(const unsigned int cycle)
+  ElasticityModel::make_grid(Triangulation3d &tria, const unsigned int cycle) const
   {
     const double       z0     = -0.5 * prm.thickness;
     const unsigned int factor = refine_through_thickness ? 1u : (1u << cycle);
     if (prm.geometry.is_rectangle())
       GridGenerator::subdivided_hyper_rectangle(
-        triangulation,
+        tria,
         {prm.subdivisions[0] * factor,
          prm.subdivisions[1] * factor,
          prm.subdivisions[2]},
@@ -31,14 +35,14 @@ namespace NitscheContact
         Point<3>(prm.length_x, prm.length_y, -z0),
         /*colorize: ids 0..5 = x-, x+, y-, y+, z-, z+*/ true);
     else
-      extrude_plate(factor);
-    triangulation.refine_global(prm.initial_refinement);
+      extrude_plate(tria, refine_through_thickness ? 0u : cycle);
+    tria.refine_global(prm.initial_refinement);
     for (unsigned int step = 0; step < local_refinement_steps; ++step)
       {
         if (refinement_box.empty())
           break;
         unsigned int flagged = 0;
-        for (const auto &cell : triangulation.active_cell_iterators())
+        for (const auto &cell : tria.active_cell_iterators())
           if (cell->is_locally_owned())
             {
               const Point<3> c      = cell->center();
@@ -64,21 +68,21 @@ namespace NitscheContact
             ", so nothing would be refined; allowed: a box that contains "
             "the centres of the cells to refine (or 'Local refinement "
             "steps = 0')");
-        triangulation.execute_coarsening_and_refinement();
+        tria.execute_coarsening_and_refinement();
       }
   }
 
   void
-  ElasticityModel::extrude_plate(const unsigned int factor)
+  ElasticityModel::extrude_plate(Triangulation3d   &tria,
+                                 const unsigned int refinements) const
   {
-    // the plate's mesh (the cells of the rectangle's grid on the plate)
-    // extruded through the thickness in 'Subdivisions'[2] layers; the side
-    // faces keep the plate's boundary ids (side_id), the bottom gets
-    // contact_id and the top top_id
+    // the plate's mesh (refined in plane) extruded through the thickness
+    // in 'Subdivisions'[2] layers; the side faces keep the plate's boundary
+    // ids (side_id), the bottom gets contact_id and the top top_id
     const double     z0 = -0.5 * prm.thickness;
     Triangulation<2> plane;
-    prm.geometry.make_coarse_mesh(
-      plane, {prm.subdivisions[0] * factor, prm.subdivisions[1] * factor});
+    prm.geometry.make_refined_plane(
+      plane, {prm.subdivisions[0], prm.subdivisions[1]}, refinements);
     Triangulation<3> solid;
     GridGenerator::extrude_triangulation(plane, prm.subdivisions[2] + 1,
                                          prm.thickness, solid);
@@ -93,104 +97,82 @@ namespace NitscheContact
                                 side_id(face->boundary_id()));
         }
     auto [vertices, cells, faces] = GridTools::get_coarse_mesh_description(solid);
-    triangulation.create_triangulation(vertices, cells, faces);
+    tria.create_triangulation(vertices, cells, faces);
+    std::set<types::boundary_id> sides;
+    for (const types::boundary_id b : prm.geometry.boundary_ids)
+      sides.insert(side_id(b));
+    prm.geometry.attach_cylinder_manifold(tria, sides, /*manifold id*/ 0);
   }
 
   void
   ElasticityModel::refine_in_plane(const unsigned int cycle)
   {
-    // The support points of Q_p on the new (uniform, box) mesh form the
-    // lattice x = i dx, y = j dy, z = z0 + k dz. Every old cell is split
-    // 2 x 2 x 1 by the new mesh, so the lattice points in an old cell lie
-    // at the fixed reference points (i/2p, j/2p, k/p): U is evaluated there
-    // on the locally owned old cells, summed over the ranks (points on cell
-    // boundaries are averaged), and read back at the new DoFs. Exact: the
-    // old Q_p function is a new Q_p function.
-    const unsigned int p     = degree;
-    const unsigned int scale = 1u << prm.initial_refinement;
-    const std::array<unsigned int, 3> n = {
-      {prm.subdivisions[0] * (1u << cycle) * scale * p + 1,
-       prm.subdivisions[1] * (1u << cycle) * scale * p + 1,
-       prm.subdivisions[2] * scale * p + 1}};
-    const std::array<double, 3> spacing = {{prm.length_x / (n[0] - 1),
-                                            prm.length_y / (n[1] - 1),
-                                            prm.thickness / (n[2] - 1)}};
-    const double z0           = -0.5 * prm.thickness;
-    bool         off_lattice  = false; // (an internal error; collective)
-    const auto   lattice_point = [&](const Point<3> &x) {
-      std::array<long, 3> i;
-      for (unsigned int d = 0; d < 3; ++d)
+    // the new mesh beside the old one, for its support points; U there is
+    // the old U at these points (found on the old mesh by deal.II's
+    // RemotePointEvaluation, on whichever rank owns them)
+    // (the components of a node follow each other: one point per node)
+    std::vector<Point<3>>    points;
+    std::vector<std::size_t> point_of; // per owned DoF of the new mesh
+    {
+      Triangulation3d next(comm);
+      make_grid(next, cycle);
+      DoFHandler<3> next_dofs(next);
+      next_dofs.distribute_dofs(fe);
+      for (const SupportPoint &p : owned_support_points(next_dofs))
         {
-          i[d] = std::lround((x[d] - (d == 2 ? z0 : 0.)) / spacing[d]);
-          if (i[d] < 0 || i[d] >= static_cast<long>(n[d]))
-            off_lattice = true, i[d] = 0;
+          if (points.empty() || !(points.back() == p.point))
+            points.push_back(p.point);
+          point_of.push_back(points.size() - 1);
         }
-      return (static_cast<std::size_t>(i[2]) * n[1] + i[1]) * n[0] + i[0];
-    };
-    // per lattice point: the three components of U summed over the old
-    // cells that contain it, and the number of those cells
-    const std::size_t   n_points = std::size_t(n[0]) * n[1] * n[2];
-    std::vector<double> values(4 * n_points, 0.);
-
-    std::vector<Point<3>> reference;
-    for (unsigned int k = 0; k <= p; ++k)
-      for (unsigned int j = 0; j <= 2 * p; ++j)
-        for (unsigned int i = 0; i <= 2 * p; ++i)
-          reference.emplace_back(0.5 * i / p, 0.5 * j / p, 1. * k / p);
-    FEValues<3> old_values(mapping, fe, Quadrature<3>(reference),
-                           update_values | update_quadrature_points);
-    std::vector<Vector<double>> u(reference.size(), Vector<double>(3));
+    }
+    // a point on a circular edge may lie outside the old mesh's polynomial
+    // boundary by a fraction of its cell: it is taken from the nearest cell
+    Utilities::MPI::RemotePointEvaluation<3> evaluation(1e-2);
     ghosted = solution;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          old_values.reinit(cell);
-          old_values.get_function_values(ghosted, u);
-          for (unsigned int q = 0; q < reference.size(); ++q)
-            {
-              const std::size_t l = lattice_point(old_values.quadrature_point(q));
-              for (unsigned int c = 0; c < 3; ++c)
-                values[4 * l + c] += u[q][c];
-              values[4 * l + 3] += 1.;
-            }
-        }
-    Utilities::MPI::sum(values, comm, values);
+    const auto values = VectorTools::point_values<3>(mapping, dof_handler,
+                                                     ghosted, points,
+                                                     evaluation);
+    AssertThrow(evaluation.all_points_found(),
+                ExcMessage("refining in plane: a support point of the new "
+                           "mesh lies outside the previous mesh"));
 
     triangulation.clear();
-    make_grid(cycle);
+    make_grid(triangulation, cycle);
     setup_dofs();
-    for (const SupportPoint &p : owned_support_points())
+    const std::vector<SupportPoint> support = owned_support_points(dof_handler);
+    AssertThrow(support.size() == point_of.size(),
+                ExcMessage("refining in plane: the rebuilt mesh differs"));
+    for (std::size_t i = 0; i < support.size(); ++i)
       {
-        const std::size_t l = lattice_point(p.point);
-        off_lattice         = off_lattice || !(values[4 * l + 3] > 0.);
-        solution[p.dof] =
-          values[4 * l + p.component] / std::max(values[4 * l + 3], 1.);
+        const std::size_t k = point_of[i];
+        AssertThrow(support[i].point.distance(points[k]) <=
+                      1e-12 * prm.geometry.size(),
+                    ExcMessage("refining in plane: the rebuilt mesh differs"));
+        solution[support[i].dof] = values[k][support[i].component];
       }
-    AssertThrow(Utilities::MPI::max(off_lattice ? 1 : 0, comm) == 0,
-                ExcMessage("refining in plane: a support point is not on "
-                           "the lattice of the previous mesh"));
     solution.compress(VectorOperation::insert);
     constraints.distribute(solution);
   }
 
   std::vector<ElasticityModel::SupportPoint>
-  ElasticityModel::owned_support_points() const
+  ElasticityModel::owned_support_points(const DoFHandler<3> &dofs_of) const
   {
+    const IndexSet      owned = dofs_of.locally_owned_dofs();
     const Quadrature<3> unit(fe.get_unit_support_points());
     FEValues<3>         values(mapping, fe, unit, update_quadrature_points);
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    std::vector<bool>         seen(locally_owned.n_elements(), false);
+    std::vector<bool>         seen(owned.n_elements(), false);
     std::vector<SupportPoint> points;
-    points.reserve(locally_owned.n_elements());
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    points.reserve(owned.n_elements());
+    for (const auto &cell : dofs_of.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           values.reinit(cell);
           cell->get_dof_indices(dofs);
           for (unsigned int i = 0; i < dofs.size(); ++i)
-            if (locally_owned.is_element(dofs[i]))
+            if (owned.is_element(dofs[i]))
               {
-                const auto k = locally_owned.index_within_set(dofs[i]);
+                const auto k = owned.index_within_set(dofs[i]);
                 if (seen[k])
                   continue;
                 seen[k] = true;
@@ -340,7 +322,8 @@ namespace NitscheContact
         constraints.add_line(global_index);
       return y;
     };
-    const Point<3> centre(prm.length_x / 2, prm.length_y / 2, 0.);
+    const Point<2> middle = prm.geometry.box_center();
+    const Point<3> centre(middle[0], middle[1], 0.);
     double         y_centre = centre[1];
     if (pinned_modes[0])
       y_centre = nearest(0, centre);
@@ -349,8 +332,9 @@ namespace NitscheContact
     // u1 at a point as far from the first u1 pin in x2 as the plate allows
     if (pinned_modes[2])
       nearest(0,
-              Point<3>(prm.length_x / 2,
-                       y_centre < prm.length_y / 2 ? prm.length_y : 0.,
+              Point<3>(middle[0],
+                       y_centre < middle[1] ? prm.geometry.upper[1] :
+                                              prm.geometry.lower[1],
                        0.));
   }
 } // namespace NitscheContact

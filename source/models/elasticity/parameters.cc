@@ -217,8 +217,10 @@ namespace NitscheContact
     // outside, plus those inside times 8^steps; p4est's 2:1 balance adds a
     // layer around the box, ignored here), and refuse more than 1e7 cells
     // before any memory is used.
-    const double lo[3] = {0., 0., -prm.thickness / 2},
-                 hi[3] = {prm.length_x, prm.length_y, prm.thickness / 2};
+    const double lo[3] = {prm.geometry.lower[0], prm.geometry.lower[1],
+                          -prm.thickness / 2},
+                 hi[3] = {prm.geometry.upper[0], prm.geometry.upper[1],
+                          prm.thickness / 2};
     double fraction = 1.;
     for (unsigned int d = 0; d < 3; ++d)
       {
@@ -295,9 +297,12 @@ namespace NitscheContact
       for (unsigned int i = 0; i <= 20; ++i)
         for (unsigned int j = 0; j <= 20; ++j)
           for (unsigned int c = 0; c < 2; ++c)
-            if (traction_function->value(Point<2>(prm.length_x * i / 20.,
-                                                  prm.length_y * j / 20.),
-                                         c) != 0.)
+            if (const Point<2> x(
+                  prm.geometry.lower[0] +
+                    (prm.geometry.upper[0] - prm.geometry.lower[0]) * i / 20.,
+                  prm.geometry.lower[1] +
+                    (prm.geometry.upper[1] - prm.geometry.lower[1]) * j / 20.);
+                prm.geometry.contains(x) && traction_function->value(x, c) != 0.)
               bad_value("Elasticity/Top tangential traction",
                         tangential_traction,
                         "the top face is clamped ('Elasticity/Top face = "

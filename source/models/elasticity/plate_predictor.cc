@@ -125,7 +125,7 @@ namespace NitscheContact
     // the Mindlin kinematics with the plane-stress thickness strain
     // eps33 = -nu/(1-nu) (eps11 + eps22) and u3 = w on the lower face
     // x3 = -eps, where the plate's contact condition holds.
-    const std::vector<SupportPoint> support = owned_support_points();
+    const std::vector<SupportPoint> support = owned_support_points(dof_handler);
     // the plate once per in-plane position (a Q2 column holds 3 nodes of 3
     // components each): positions equal to round-off share an entry
     const double scale = 1e9 / std::max(prm.length_x, prm.length_y);

@@ -274,20 +274,23 @@ namespace NitscheContact
 
     // --- Mesh, DoFs and constraints (mesh.cc)
 
-    /// The mesh of a cycle, in the empty triangulation: the coarse box mesh
-    /// ('Subdivisions', with the in-plane ones times 2^cycle unless 'Refine
-    /// through thickness'), 'Initial refinement' global and the local
-    /// refinements.
+    using Triangulation3d = dealii::parallel::distributed::Triangulation<3>;
+    /// The mesh of a cycle, in the empty triangulation `tria`: the coarse
+    /// mesh (for the rectangle the box of 'Subdivisions', with the in-plane
+    /// ones times 2^cycle unless 'Refine through thickness'; for the other
+    /// shapes the plate's mesh refined in plane `cycle` times, extruded),
+    /// 'Initial refinement' global and the local refinements.
     void
-    make_grid(unsigned int cycle);
-    /// make_grid() on the L-shape and the rectangle with hole: the plate's
-    /// mesh with 'factor' times its subdivisions, extruded.
+    make_grid(Triangulation3d &tria, unsigned int cycle) const;
+    /// make_grid() on the shapes other than the rectangle: the plate's mesh
+    /// refined `refinements` times in plane, extruded in layers, with the
+    /// cylindrical manifold on circular edges.
     void
-    extrude_plate(unsigned int factor);
-    /// Replace the mesh by the one of 'cycle' with the in-plane
-    /// subdivisions doubled, and U by its interpolant there (exact: the
-    /// meshes are nested in plane and have the same layers). Needs the
-    /// uniform box mesh (no local refinement).
+    extrude_plate(Triangulation3d &tria, unsigned int refinements) const;
+    /// Replace the mesh by the one of 'cycle' (refined in plane) and U by
+    /// its interpolant there: U at the new support points, evaluated on
+    /// the old mesh (exact where the meshes are nested: the old Q_p
+    /// function is a new one).
     void
     refine_in_plane(unsigned int cycle);
     void
@@ -312,10 +315,11 @@ namespace NitscheContact
       dealii::Point<3>                point;
       unsigned int                    component;
     };
+    /// (of `dofs`, a DoFHandler of fe)
     std::vector<SupportPoint>
-    owned_support_points() const;
+    owned_support_points(const dealii::DoFHandler<3> &dofs) const;
 
-    dealii::parallel::distributed::Triangulation<3> triangulation;
+    Triangulation3d                                 triangulation;
     dealii::FESystem<3>                             fe;
     dealii::DoFHandler<3>                           dof_handler;
     dealii::MappingQ<3>                             mapping;
