@@ -253,7 +253,7 @@ def finish():
 
 
 def write_msh(path, lx, ly, nx, ny, removed, position=None):
-    """Gmsh 2.2 (or UCD for a .ucd path): the cells of the nx x ny grid of [0,lx] x [0,ly] whose
+    """Gmsh 2.2 (or UCD for a .ucd path, Abaqus for a .inp path): the cells of the nx x ny grid of [0,lx] x [0,ly] whose
     centre is not in removed(x, y), and the boundary edges with the
     built-in shapes' ids (physical tags) 0..3 on x = 0, lx, y = 0, ly and
     4 elsewhere; position(x, y), if given, moves the grid's nodes."""
@@ -261,12 +261,13 @@ def write_msh(path, lx, ly, nx, ny, removed, position=None):
     node = lambda i, j: j * (nx + 1) + i + 1
     cells = [(i, j) for j in range(ny) for i in range(nx)
              if not removed((i + 0.5) * lx / nx, (j + 0.5) * ly / ny)]
-    edges = {}
-    for i, j in cells:
-        for a, b in ((node(i, j), node(i + 1, j)), (node(i + 1, j), node(i + 1, j + 1)),
-                     (node(i + 1, j + 1), node(i, j + 1)), (node(i, j + 1), node(i, j))):
+    edges, side = {}, {}
+    for c, (i, j) in enumerate(cells):
+        for k, (a, b) in enumerate(((node(i, j), node(i + 1, j)), (node(i + 1, j), node(i + 1, j + 1)),
+                                    (node(i + 1, j + 1), node(i, j + 1)), (node(i, j + 1), node(i, j)))):
             key = (min(a, b), max(a, b))
             edges[key] = None if key in edges else (a, b)
+            side[(a, b)] = (c + 1, k + 1)  # Abaqus: element, side S1..S4
     xy = lambda n: (((n - 1) % (nx + 1)) * lx / nx, ((n - 1) // (nx + 1)) * ly / ny)
     lines = []
     for e in edges.values():
@@ -276,6 +277,24 @@ def write_msh(path, lx, ly, nx, ny, removed, position=None):
         tag = (0 if x0 == x1 == 0 else 1 if x0 == x1 == lx else
                2 if y0 == y1 == 0 else 3 if y0 == y1 == ly else 4)
         lines.append((tag, e))
+    if path.endswith(".inp"):
+        # boundary ids from the surfaces SS<id>, the cells' material id 1
+        with open(path, "w") as f:
+            f.write("*Heading\n*Part, name=plate\n*Node\n")
+            for j in range(ny + 1):
+                for i in range(nx + 1):
+                    f.write("%d, %r, %r\n" % ((node(i, j),) + moved(i * lx / nx, j * ly / ny)))
+            f.write("*Element, type=CPS4, ELSET=EB1\n")
+            for c, (i, j) in enumerate(cells):
+                f.write("%d, %d, %d, %d, %d\n" % (c + 1, node(i, j), node(i + 1, j),
+                                                    node(i + 1, j + 1), node(i, j + 1)))
+            for tag in sorted(set(t for t, _ in lines)):
+                f.write("*Surface, type=ELEMENT, name=SS%d\n" % tag)
+                for t, e in lines:
+                    if t == tag:
+                        f.write("%d, S%d\n" % side[e])
+            f.write("*End Part\n")
+        return
     if path.endswith(".ucd"):
         with open(path, "w") as f:
             f.write("# UCD\n%d %d 0 0 0\n" % ((nx + 1) * (ny + 1), len(lines) + len(cells)))
