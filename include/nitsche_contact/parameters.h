@@ -10,12 +10,15 @@
 
 #include <nitsche_contact/geometry/plate_geometry.h>
 #include <nitsche_contact/nitsche_kernel.h>
+#include <nitsche_contact/parameters/height_data.h>
 #include <nitsche_contact/parameters/input_checks.h>
 #include <nitsche_contact/parameters/obstacle_surface.h>
+#include <nitsche_contact/parameters/transverse_load.h>
 #include <nitsche_contact/nonlinear/nonlinear_solver.h>
 
 #include <algorithm>
 #include <array>
+#include <map>
 #include <memory>
 #include <new>
 #include <optional>
@@ -64,13 +67,17 @@ namespace NitscheContact
     /// largest |load| on an 11 x 11 grid of the plate (magnitude check)
     double load_scale = 0.;
     std::string load_constants;
+    /// 'Load/Region loads': a constant load per material id of the mesh
+    std::map<dealii::types::material_id, double> region_loads;
 
     // "Obstacle"
-    std::string obstacle_type;   // plane | sphere | function
+    std::string obstacle_type;   // plane | sphere | function | data
     double      obstacle_level = -1.;
     dealii::Point<3> sphere_center;
     double           sphere_radius = 1.;
     std::string      obstacle_expression; // height z(x,y) of the obstacle
+    /// 'Type = data': the heights of 'Obstacle/Data file'
+    std::shared_ptr<const HeightData> obstacle_data;
     bool obstacle_level_is_midplane = false; // plate convention
 
     // "Contact"

@@ -343,6 +343,9 @@ namespace NitscheContact
         lower = center - Point<2>(radius, radius);
         upper = center + Point<2>(radius, radius);
       }
+    material_ids.clear();
+    for (const auto &cell : coarse->active_cell_iterators())
+      material_ids.insert(cell->material_id());
     boundary_ids.clear();
     for (const auto &face : coarse->active_face_iterators())
       if (face->at_boundary())

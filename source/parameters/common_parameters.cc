@@ -102,6 +102,13 @@ namespace NitscheContact
                     "upwards (a function of x and y).");
       declare_entry(prm, "Function constants", "", Patterns::Anything(),
                     "Constants of the load function, e.g. 'q0=1, a=2'.");
+      declare_entry(prm, "Region loads", "", Patterns::Anything(),
+                    "Constant loads per unit area on regions of the mesh, "
+                    "added to 'Transverse load': 'id: value' items separated "
+                    "by ';', e.g. '1: -0.02; 2: 0', where id is a material "
+                    "id of the cells (of a mesh file: in Gmsh the physical "
+                    "tag of a surface; every cell of a built-in shape has "
+                    "the id 0). Empty: none.");
       prm.leave_subsection();
     }
 
@@ -110,10 +117,11 @@ namespace NitscheContact
     {
       prm.enter_subsection("Obstacle");
       declare_entry(prm, "Type", "plane",
-                    Patterns::Selection("plane|sphere|function"),
+                    Patterns::Selection("plane|sphere|function|data"),
                     "The rigid obstacle below the plate: the plane z = "
-                    "'Level', the upper cap of a sphere, or the surface z = "
-                    "'Height'(x, y).");
+                    "'Level', the upper cap of a sphere, the surface z = "
+                    "'Height'(x, y), or heights on a grid read from 'Data "
+                    "file'.");
       declare_entry(prm, "Level", "-1", Patterns::Double(),
                     "Height of the plane obstacle.");
       declare_entry(prm, "Sphere center", "0, 0, -1", Patterns::Anything(),
@@ -122,6 +130,15 @@ namespace NitscheContact
                     "Radius of the spherical obstacle.");
       declare_entry(prm, "Height", "-1", Patterns::Anything(),
                     "Height z(x, y) of the obstacle for 'Type = function'.");
+      declare_entry(prm, "Data file", "", Patterns::Anything(),
+                    "For 'Type = data': a text file of heights on a uniform "
+                    "grid, bilinear between its points; no obstacle outside "
+                    "the grid. Lines starting with '#' are comments; then "
+                    "'x_min x_max n_x', 'y_min y_max n_y' (at least 2 points "
+                    "per direction) and n_y rows of n_x heights, x "
+                    "increasing along a row, the rows in increasing y. A "
+                    "relative path is taken from the directory the program "
+                    "runs in.");
       declare_entry(prm,
                     "Plate obstacle convention",
                     "bottom face",
@@ -390,12 +407,14 @@ namespace NitscheContact
             if (h > surface + 1e-12 * thickness)
               bad_value(obstacle_type == "plane"  ? "Obstacle/Level" :
                         obstacle_type == "sphere" ? "Obstacle/Sphere center" :
+                        obstacle_type == "data"   ? "Obstacle/Data file" :
                                                     "Obstacle/Height",
                         obstacle_type == "plane" ?
                           number_to_string(obstacle_level) :
                         obstacle_type == "sphere" ?
                           prm_text_of_center(sphere_center) :
-                          obstacle_expression,
+                        obstacle_type == "data" ? obstacle_data->file :
+                                                  obstacle_expression,
                         "the obstacle (height " + number_to_string(h) +
                           " at (" + number_to_string(p[0]) + ", " +
                           number_to_string(p[1]) +
@@ -479,6 +498,7 @@ namespace NitscheContact
   {
     load_expression = prm.get("Transverse load");
     load_constants  = prm.get("Function constants");
+    region_loads    = parse_region_loads(prm.get("Region loads"), geometry);
     const auto f = make_parsed_function<2>(load_expression, load_constants,
                                            1, "Load/Transverse load");
     check_finite_on_plate(*f, "Load/Transverse load", load_expression,
@@ -494,6 +514,8 @@ namespace NitscheContact
           if (geometry.contains(p))
             load_scale = std::max(load_scale, std::abs(f->value(p)));
         }
+    for (const auto &[id, value] : region_loads)
+      load_scale = std::max(load_scale, std::abs(value));
   }
   prm.leave_subsection();
   }
@@ -505,9 +527,18 @@ namespace NitscheContact
   {
     obstacle_type = Utilities::trim(prm.get("Type"));
     if (obstacle_type != "plane" && obstacle_type != "sphere" &&
-        obstacle_type != "function")
+        obstacle_type != "function" && obstacle_type != "data")
       bad_value("Obstacle/Type", obstacle_type,
-                "allowed are 'plane', 'sphere', 'function'");
+                "allowed are 'plane', 'sphere', 'function', 'data'");
+    obstacle_data.reset();
+    if (obstacle_type == "data")
+      {
+        const std::string file = Utilities::trim(prm.get("Data file"));
+        if (file.empty())
+          bad_value("Obstacle/Data file", "",
+                    "'Type = data' needs a file of heights on a grid");
+        obstacle_data = std::make_shared<const HeightData>(HeightData::read(file));
+      }
     obstacle_level = prm.get_double("Level");
     const auto c   = parse_doubles(prm.get("Sphere center"),
                                  "Obstacle/Sphere center", ',');

@@ -17,6 +17,17 @@ namespace NitscheContact
     if (type == "function")
       function = make_parsed_function<2>(prm.obstacle_expression, "", 1,
                                          "Obstacle/Height");
+    if (type == "data")
+      {
+        const HeightData &d = *prm.obstacle_data;
+        data_lower          = d.lower;
+        data_upper          = d.upper;
+        data = std::make_unique<Functions::InterpolatedUniformGridData<2>>(
+          std::array<std::pair<double, double>, 2>{
+            {{d.lower[0], d.upper[0]}, {d.lower[1], d.upper[1]}}},
+          std::array<unsigned int, 2>{{d.n_points[0] - 1, d.n_points[1] - 1}},
+          d.values);
+      }
   }
 
   std::string
@@ -46,6 +57,16 @@ namespace NitscheContact
         if (r2 >= radius * radius)
           return no_obstacle;
         return center[2] + std::sqrt(radius * radius - r2);
+      }
+    if (type == "data")
+      {
+        // outside the grid there is no obstacle (deal.II would extend the
+        // edge values)
+        const double slack = 1e-12 * (data_upper - data_lower).norm();
+        for (unsigned int d = 0; d < 2; ++d)
+          if (p[d] < data_lower[d] - slack || p[d] > data_upper[d] + slack)
+            return no_obstacle;
+        return data->value(p);
       }
     return function->value(p);
   }

@@ -489,6 +489,55 @@ CASES.append(("boundary id 1000 on the rectangle",
               "all: clamped\nend",
               ["Geometry/Boundary conditions", "no boundary id 1000"]))
 
+# obstacle data files: each defect is named with the file and its line
+DATA_FILES = [
+    ("data file, a row too short", "0 10 3\n0 10 2\n-1 -1 -1\n-1 -1\n",
+     ["short.txt", "line 4", "2 values, expected n_x = 3"]),
+    ("data file, a missing row", "# heights\n0 10 2\n0 10 3\n-1 -1\n-1 -1\n",
+     ["missing.txt", "ends after 2 of its 3 rows"]),
+    ("data file, a value that is not a number", "0 10 2\n0 10 2\n-1 abc\n-1 -1\n",
+     ["letters.txt", "line 3", "'abc' is not a number"]),
+    ("data file, a non-finite value", "0 10 2\n0 10 2\n-1 -1\n-1 nan\n",
+     ["nan.txt", "line 4", "'nan' is not a finite number"]),
+    ("data file, one point in x", "0 10 1\n0 10 2\n-1\n-1\n",
+     ["one.txt", "line 1", "n_x = 1", "at least 2 points per direction"]),
+    ("data file, an empty extent", "0 10 2\n5 5 2\n-1 -1\n-1 -1\n",
+     ["flat.txt", "line 2", "y_max must exceed y_min"]),
+    ("data file, an extra row", "0 10 2\n0 10 2\n-1 -1\n-1 -1\n-1 -1\n",
+     ["extra.txt", "line 5", "more rows than n_y = 2"]),
+]
+for (case, text, expected), name in zip(DATA_FILES, ("short", "missing", "letters", "nan",
+                                                     "one", "flat", "extra")):
+    with open(os.path.join(args.workdir, name + ".txt"), "w") as f:
+        f.write(text)
+    CASES.append((case, "subsection Obstacle\n  set Type = data\n  set Data file = %s.txt\nend"
+                  % name, ["obstacle data file", "error"] + expected))
+CASES.append(("data obstacle without a file",
+              "subsection Obstacle\n  set Type = data\nend",
+              ["Obstacle/Data file", "needs a file"]))
+CASES.append(("data obstacle file missing",
+              "subsection Obstacle\n  set Type = data\n  set Data file = no_such_heights.txt\nend",
+              ["Obstacle/Data file", "no_such_heights.txt", "cannot be read"]))
+with open(os.path.join(args.workdir, "high.txt"), "w") as f:
+    f.write("0 10 2\n0 10 2\n1 1\n1 1\n")
+CASES.append(("data obstacle above the clamped edges",
+              "subsection Obstacle\n  set Type = data\n  set Data file = high.txt\nend",
+              ["Obstacle/Data file", "high.txt", "lies above the contact surface"]))
+# region loads
+CASES.append(("region load on a material id the mesh does not have",
+              "subsection Load\n  set Region loads = 0: -0.01; 3: -0.02\nend",
+              ["Load/Region loads", "0: -0.01; 3: -0.02", "no cells of material id 3",
+               "material ids are 0"]))
+CASES.append(("region load without a value",
+              "subsection Load\n  set Region loads = 0:\nend",
+              ["Load/Region loads", "0:"]))
+CASES.append(("region load named twice",
+              "subsection Load\n  set Region loads = 0: -1; 0: -2\nend",
+              ["Load/Region loads", "named twice"]))
+CASES.append(("region load id not a number",
+              "subsection Load\n  set Region loads = plate: -1\nend",
+              ["Load/Region loads", "'plate' is no material id"]))
+
 for i, (case, body, expected) in enumerate(CASES):
     prm = os.path.join(args.workdir, "case%02d.prm" % i)
     outdir = os.path.join(args.workdir, "case%02d-out" % i)

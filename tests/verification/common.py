@@ -252,11 +252,13 @@ def finish():
     print("all checks passed")
 
 
-def write_msh(path, lx, ly, nx, ny, removed, position=None):
+def write_msh(path, lx, ly, nx, ny, removed, position=None, material=None):
     """Gmsh 2.2 (or UCD for a .ucd path, Abaqus for a .inp path): the cells of the nx x ny grid of [0,lx] x [0,ly] whose
     centre is not in removed(x, y), and the boundary edges with the
     built-in shapes' ids (physical tags) 0..3 on x = 0, lx, y = 0, ly and
-    4 elsewhere; position(x, y), if given, moves the grid's nodes."""
+    4 elsewhere; position(x, y), if given, moves the grid's nodes; in Gmsh
+    the cells' physical tag (material id) is material(x, y) of their centre,
+    7 if not given."""
     moved = position or (lambda x, y: (x, y))
     node = lambda i, j: j * (nx + 1) + i + 1
     cells = [(i, j) for j in range(ny) for i in range(nx)
@@ -321,7 +323,8 @@ def write_msh(path, lx, ly, nx, ny, removed, position=None):
             f.write("%d 1 2 %d %d %d %d\n" % (k, tag, tag + 1, a, b))
             k += 1
         for i, j in cells:
-            f.write("%d 3 2 7 7 %d %d %d %d\n" % (k, node(i, j), node(i + 1, j),
-                                                node(i + 1, j + 1), node(i, j + 1)))
+            m = material((i + 0.5) * lx / nx, (j + 0.5) * ly / ny) if material else 7
+            f.write("%d 3 2 %d %d %d %d %d %d\n" % (k, m, m, node(i, j), node(i + 1, j),
+                                                   node(i + 1, j + 1), node(i, j + 1)))
             k += 1
         f.write("$EndElements\n")

@@ -173,6 +173,8 @@ namespace NitscheContact
     n_coarse_cells(const std::vector<unsigned int> &subdivisions) const;
     /// The boundary ids of the mesh.
     std::set<dealii::types::boundary_id> boundary_ids;
+    /// The material ids of the mesh's cells (0 on the built-in shapes).
+    std::set<dealii::types::material_id> material_ids;
     /// The points of the mesh's boundary parts with a deflection held at 0
     /// (clamped or simply supported): 100 per coarse boundary edge, along
     /// its manifold, for checks of the obstacle against the supports.

@@ -2,6 +2,7 @@
 #ifndef nitsche_contact_parameters_obstacle_surface_h
 #define nitsche_contact_parameters_obstacle_surface_h
 
+#include <deal.II/base/function_lib.h>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/point.h>
 
@@ -13,8 +14,9 @@ namespace NitscheContact
   struct CommonParameters;
 
   /// The rigid obstacle as a height field z = z_obs(x, y) below the plate.
-  /// Where a sphere does not reach, the height is no_obstacle (-1e30; a
-  /// finite value keeps the contact arithmetic free of infinities).
+  /// Where a sphere or a data grid does not reach, the height is
+  /// no_obstacle (-1e30; a finite value keeps the contact arithmetic free
+  /// of infinities).
   class ObstacleSurface
   {
   public:
@@ -47,6 +49,9 @@ namespace NitscheContact
     double                                         radius;
     std::unique_ptr<dealii::FunctionParser<2>>     function;
     std::string                                    expression;
+    /// 'Type = data': bilinear between the grid points of the file
+    std::unique_ptr<dealii::Functions::InterpolatedUniformGridData<2>> data;
+    dealii::Point<2>                               data_lower, data_upper;
   };
 } // namespace NitscheContact
 

@@ -180,7 +180,9 @@ namespace NitscheContact
           {
             const Point<3> &x = fv.quadrature_point(q);
             const double    f3 =
-              load_function->value(Point<2>(x[0], x[1])) / prm.thickness;
+              transverse_load->value(Point<2>(x[0], x[1]),
+                                     fv.get_cell()->material_id()) /
+              prm.thickness;
             record.note(1., f3, x);
             for (unsigned int i = 0; i < n; ++i)
               if (comp[i] == 2)
@@ -213,7 +215,7 @@ namespace NitscheContact
               traction_function->vector_value(p, traction);
               const double t[3] = {traction(0), traction(1),
                                    load_as_traction ?
-                                     load_function->value(p) :
+                                     transverse_load->value(p, cell->material_id()) :
                                      0.};
               record.note(2., t[0], x);
               record.note(2., t[1], x);

@@ -276,10 +276,7 @@ namespace NitscheContact
   void
   ElasticityModel::make_load_functions()
   {
-    load_function = make_parsed_function<2>(prm.load_expression,
-                                            prm.load_constants,
-                                            1,
-                                            "Load/Transverse load");
+    transverse_load = std::make_unique<TransverseLoad>(prm);
     traction_function =
       make_parsed_function<2>(tangential_traction, "", 2,
                               "Elasticity/Top tangential traction");

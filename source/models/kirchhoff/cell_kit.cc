@@ -257,7 +257,8 @@ namespace NitscheContact
                                x0[1] + kit.unit_points[q][1] * kit.h[1]);
               if (!load_is_constant)
                 {
-                  load_values[c * nq + q] = load_function->value(x);
+                  load_values[c * nq + q] =
+                    transverse_load->value(x, cells[c]->material_id());
                   if (!std::isfinite(load_values[c * nq + q]))
                     non_finite_at_point("Load/Transverse load",
                                         prm.load_expression,

@@ -21,23 +21,6 @@ namespace NitscheContact
 
   namespace
   {
-    /// True (and the value) if the expression is a plain number.
-    bool
-    is_number(const std::string &text, double &value)
-    {
-      const std::string t = dealii::Utilities::trim(text);
-      try
-        {
-          std::size_t pos = 0;
-          value           = std::stod(t, &pos);
-          return pos == t.size();
-        }
-      catch (const std::exception &)
-        {
-          return false;
-        }
-    }
-
     /// The vertices of a cell, for messages.
     std::string
     vertex_list(const Triangulation<2>::cell_iterator &cell)
@@ -130,11 +113,8 @@ namespace NitscheContact
 
     read_parameters(param);
 
-    load_function = make_parsed_function<2>(prm.load_expression,
-                                            prm.load_constants,
-                                            1,
-                                            "Load/Transverse load");
-    load_is_constant = is_number(prm.load_expression, load_constant);
+    transverse_load  = std::make_unique<TransverseLoad>(prm);
+    load_is_constant = transverse_load->is_constant(load_constant);
 
     D          = prm.bending_stiffness();
     lambda_eps = prm.lambda() * 0.5 * prm.thickness;

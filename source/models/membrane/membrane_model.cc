@@ -54,10 +54,7 @@ namespace NitscheContact
       contact_rule(contact_rule_name,
                    contact_points_per_direction,
                    "Membrane/Contact quadrature points");
-    load_function = make_parsed_function<2>(prm.load_expression,
-                                            prm.load_constants,
-                                            1,
-                                            "Load/Transverse load");
+    transverse_load = std::make_unique<TransverseLoad>(prm);
     if (!prm.exact_solution.empty())
       exact_solution =
         make_parsed_function<2>(prm.exact_solution,
@@ -168,7 +165,8 @@ namespace NitscheContact
             contact_psi[c * nc + q] = obstacle.height(x);
             if (!std::isfinite(contact_psi[c * nc + q]) && bad_heights++ == 0)
               bad_point = x;
-            contact_load[c * nc + q] = load_function->value(x);
+            contact_load[c * nc + q] =
+              transverse_load->value(x, cell->material_id());
             if (!std::isfinite(contact_load[c * nc + q]))
               non_finite_at_point("Load/Transverse load", prm.load_expression,
                                   contact_load[c * nc + q], x);
@@ -178,7 +176,8 @@ namespace NitscheContact
         cell_load = 0.;
         for (unsigned int q = 0; q < nb; ++q)
           {
-            const double f = load_function->value(bulk_values.quadrature_point(q));
+            const double f = transverse_load->value(
+              bulk_values.quadrature_point(q), cell->material_id());
             if (!std::isfinite(f))
               non_finite_at_point("Load/Transverse load", prm.load_expression,
                                   f, bulk_values.quadrature_point(q));

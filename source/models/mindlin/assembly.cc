@@ -59,7 +59,7 @@ namespace NitscheContact
         for (unsigned int q = 0; q < bulk_quadrature.size(); ++q)
           {
             const Point<2> &x     = values.quadrature_point(q);
-            const double    value = load_function->value(x);
+            const double    value = transverse_load->value(x, cell->material_id());
             if (!std::isfinite(value))
               non_finite_at_point("Load/Transverse load",
                                   prm.load_expression, value, x);

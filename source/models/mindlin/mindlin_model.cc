@@ -104,10 +104,7 @@ namespace NitscheContact
                   std::to_string(common.subdivisions[0]) + ", " +
                   std::to_string(common.subdivisions[1]) +
                   " with 'Initial refinement = 0'");
-    load_function = make_parsed_function<2>(common.load_expression,
-                                            common.load_constants,
-                                            1,
-                                            "Load/Transverse load");
+    transverse_load = std::make_unique<TransverseLoad>(common);
     if (!common.exact_solution.empty())
       {
         exact_solution =

@@ -440,7 +440,7 @@ namespace NitscheContact
     dealii::TrilinosWrappers::MPI::Vector  ghosted;       // U with ghosts
 
     ObstacleSurface                                obstacle;
-    std::unique_ptr<dealii::FunctionParser<2>>     load_function;
+    std::unique_ptr<TransverseLoad> transverse_load;
     std::unique_ptr<dealii::FunctionParser<2>>     traction_function;
     std::unique_ptr<dealii::FunctionParser<3>>     exact_solution;
 

@@ -426,7 +426,7 @@ namespace NitscheContact
     // ----- material and load
     double D;   ///< bending stiffness
     double lambda_eps; ///< lambda_L t/2 (Kirchhoff with Nitsche)
-    std::unique_ptr<dealii::FunctionParser<2>> load_function;
+    std::unique_ptr<TransverseLoad> transverse_load;
     ObstacleSurface                            obstacle;
     bool    load_is_constant = true, psi_is_constant = true;
     double  load_constant = 0., psi_constant = 0.;

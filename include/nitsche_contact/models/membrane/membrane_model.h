@@ -238,7 +238,8 @@ namespace NitscheContact
     double                  kappa   = 0.;  ///< obstacle compliance of the cycle
     std::string             contact_rule_name;
     unsigned int            contact_points_per_direction = 3;
-    std::unique_ptr<dealii::FunctionParser<2>> load_function, exact_solution;
+    std::unique_ptr<TransverseLoad>            transverse_load;
+    std::unique_ptr<dealii::FunctionParser<2>> exact_solution;
     ObstacleSurface                            obstacle;
 
     // ----- mesh and space

@@ -576,7 +576,7 @@ namespace NitscheContact
     dealii::Vector<double>                 increment; // dU
 
     ObstacleSurface                            obstacle;
-    std::unique_ptr<dealii::FunctionParser<2>> load_function;
+    std::unique_ptr<TransverseLoad> transverse_load;
     std::unique_ptr<dealii::FunctionParser<2>> exact_solution;
 
     std::vector<unsigned char> previous_status;

@@ -1,0 +1,126 @@
+// Obstacle heights from a file: the reader and its checks.
+#include <nitsche_contact/parameters/height_data.h>
+#include <nitsche_contact/parameters/input_checks.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+namespace NitscheContact
+{
+  namespace
+  {
+    /// The lines of a file that carry data, with their numbers.
+    struct DataLines
+    {
+      std::vector<std::pair<unsigned int, std::string>> lines;
+    };
+
+    /// The whitespace-separated fields of a line, each a finite number;
+    /// InputError naming the file and the line otherwise.
+    std::vector<double>
+    numbers_of(const std::string &path,
+               const unsigned int line_number,
+               const std::string &line)
+    {
+      std::istringstream       fields(line);
+      std::vector<double>      numbers;
+      std::string              field;
+      while (fields >> field)
+        {
+          char        *end   = nullptr;
+          const double value = std::strtod(field.c_str(), &end);
+          if (end == field.c_str() || *end != '\0')
+            throw InputError("obstacle data file '" + path + "', line " +
+                             std::to_string(line_number) + ": '" + field +
+                             "' is not a number");
+          if (!std::isfinite(value))
+            throw InputError("obstacle data file '" + path + "', line " +
+                             std::to_string(line_number) + ": the value '" +
+                             field + "' is not a finite number");
+          numbers.push_back(value);
+        }
+      return numbers;
+    }
+  } // namespace
+
+  HeightData
+  HeightData::read(const std::string &path)
+  {
+    std::ifstream in(path);
+    if (!in)
+      bad_value("Obstacle/Data file", path,
+                "the file cannot be read; allowed: a readable file of "
+                "heights on a uniform grid (doc/parameters.md), a relative "
+                "path taken from the directory the program runs in");
+    DataLines   data;
+    std::string line;
+    for (unsigned int number = 1; std::getline(in, line); ++number)
+      {
+        const auto first = line.find_first_not_of(" \t\r");
+        if (first != std::string::npos && line[first] != '#')
+          data.lines.emplace_back(number, line);
+      }
+    const auto error = [&](const unsigned int number, const std::string &what) {
+      throw InputError("obstacle data file '" + path + "'" +
+                       (number > 0 ? ", line " + std::to_string(number) : "") +
+                       ": " + what);
+    };
+
+    HeightData result;
+    result.file = path;
+    // the two header lines: extent and number of points per direction
+    for (unsigned int d = 0; d < 2; ++d)
+      {
+        const std::string axis = d == 0 ? "x" : "y";
+        if (data.lines.size() <= d)
+          error(0, "the file ends before its header line '" + axis + "_min " +
+                     axis + "_max n_" + axis + "'");
+        const auto &[number, text] = data.lines[d];
+        const auto  v              = numbers_of(path, number, text);
+        if (v.size() != 3)
+          error(number, "expected the header '" + axis + "_min " + axis +
+                          "_max n_" + axis + "' (three numbers), found " +
+                          std::to_string(v.size()));
+        if (!(v[1] > v[0]))
+          error(number, "the extent [" + number_to_string(v[0]) + ", " +
+                          number_to_string(v[1]) + "] is empty: " + axis +
+                          "_max must exceed " + axis + "_min");
+        if (!(v[2] >= 2. && v[2] <= 1e6 && v[2] == std::floor(v[2])))
+          error(number, "n_" + axis + " = " + number_to_string(v[2]) +
+                          " is not an integer from 2 to 1e6: a grid needs "
+                          "at least 2 points per direction");
+        result.lower[d]    = v[0];
+        result.upper[d]    = v[1];
+        result.n_points[d] = static_cast<unsigned int>(v[2]);
+      }
+    const unsigned int nx = result.n_points[0], ny = result.n_points[1];
+    if (static_cast<double>(nx) * ny > 1e8)
+      error(data.lines[1].first, "n_x n_y = " +
+                                   number_to_string(double(nx) * ny) +
+                                   " values; allowed are at most 1e8");
+    // n_y rows of n_x values
+    result.values.reinit(nx, ny);
+    for (unsigned int j = 0; j < ny; ++j)
+      {
+        if (data.lines.size() <= 2 + j)
+          error(0, "the file ends after " + std::to_string(j) + " of its " +
+                     std::to_string(ny) + " rows of heights (n_y = " +
+                     std::to_string(ny) + ")");
+        const auto &[number, text] = data.lines[2 + j];
+        const auto  v              = numbers_of(path, number, text);
+        if (v.size() != nx)
+          error(number, "row " + std::to_string(j + 1) + " of the heights has " +
+                          std::to_string(v.size()) + " values, expected n_x = " +
+                          std::to_string(nx));
+        for (unsigned int i = 0; i < nx; ++i)
+          result.values(i, j) = v[i];
+      }
+    if (data.lines.size() > 2 + ny)
+      error(data.lines[2 + ny].first,
+            "more rows than n_y = " + std::to_string(ny));
+    return result;
+  }
+} // namespace NitscheContact
