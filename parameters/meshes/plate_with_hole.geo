@@ -1,7 +1,8 @@
 // A square plate [0, 10] x [0, 10] with a circular hole of radius 1.5 at
 // its centre, meshed by quadrilaterals in four structured blocks between
 // the outer edges and the hole. Boundary ids (physical lines): 1 on the
-// outer edges, 2 on the hole.
+// outer edges, 2 on the hole; material ids (physical surfaces): 1 the
+// blocks along y = 0 and y = L, 2 those along x = 0 and x = L.
 //   gmsh -2 -format msh22 plate_with_hole.geo -o plate_with_hole.msh
 L = 10;          // side of the plate
 r = 1.5;         // radius of the hole
@@ -31,4 +32,5 @@ Recombine Surface {1, 2, 3, 4};
 
 Physical Curve(1) = {1, 2, 3, 4};
 Physical Curve(2) = {5, 6, 7, 8};
-Physical Surface(1) = {1, 2, 3, 4};
+Physical Surface(1) = {1, 3};
+Physical Surface(2) = {2, 4};

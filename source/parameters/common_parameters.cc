@@ -133,7 +133,7 @@ namespace NitscheContact
       declare_entry(prm, "Data file", "", Patterns::Anything(),
                     "For 'Type = data': a text file of heights on a uniform "
                     "grid, bilinear between its points; no obstacle outside "
-                    "the grid. Lines starting with '#' are comments; then "
+                    "the grid. '#' starts a comment; the data are "
                     "'x_min x_max n_x', 'y_min y_max n_y' (at least 2 points "
                     "per direction) and n_y rows of n_x heights, x "
                     "increasing along a row, the rows in increasing y. A "

@@ -59,9 +59,10 @@ namespace NitscheContact
     std::string line;
     for (unsigned int number = 1; std::getline(in, line); ++number)
       {
-        const auto first = line.find_first_not_of(" \t\r");
-        if (first != std::string::npos && line[first] != '#')
-          data.lines.emplace_back(number, line);
+        // '#' starts a comment; lines without data are skipped
+        const std::string text = line.substr(0, line.find('#'));
+        if (text.find_first_not_of(" \t\r") != std::string::npos)
+          data.lines.emplace_back(number, text);
       }
     const auto error = [&](const unsigned int number, const std::string &what) {
       throw InputError("obstacle data file '" + path + "'" +

@@ -22,7 +22,15 @@ the page says, each against an independent value:
    area of the square less the 32-gon of the hole (the mesh's straight
    edges), to 1e-10; the solution has the mesh's symmetries x -> 10 - x and
    x <-> y to 1e-8; the free hole edge rests on the plane and the clamped
-   edge does not move."""
+   edge does not move;
+ - data_obstacle (the same mesh, two regions loaded by -0.003 and -0.001,
+   the substrate's heights from a file): the load on the plate is the
+   regions' mean -0.002 times the area above (the four blocks have equal
+   areas), to 1e-10; w is symmetric under x -> 10 - x and y -> 10 - y but
+   not under x <-> y (the regions differ); the hole edge at (3.5, 5), a
+   vertex of the mesh and a point of the data grid, rests on the sampled
+   height -0.1 + 0.02 cos(0.7 pi) cos(pi) + t/2 to 1e-5 (the edge touches
+   the substrate at some of its vertices; measured 1.3e-6)."""
 import math, os, re, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from common import parse_args, run, check, close, finish
@@ -143,4 +151,20 @@ check(abs(w[0] - (-0.09 + t / 2)) <= pen + 1e-6 and c["contact_force"] > 0,
       "penetration %.1e)" % (w[0], pen))
 check(w[6] == 0 and w[7] < -0.01,
       "mesh_file: the clamped edge (id 1) stays at 0, the plate inside sags (%.4f)" % w[7])
+
+# data obstacle and region loads on the same mesh
+text = set_entry(recipes["data_obstacle"], "Mesh file", mesh)
+text = set_entry(text, "Data file", os.path.join(folder, "substrate.txt"))
+c = solve("data_obstacle", text)
+close(dict(c["extra"])["load_total"], -0.002 * area, 1e-10,
+      "data_obstacle: the load on the plate is the regions' mean load times its area")
+w = c["probes"]
+check(abs(w[0] - w[1]) < 1e-8 and abs(w[2] - w[3]) < 1e-8 and abs(w[0] - w[2]) > 1e-3,
+      "data_obstacle: w(5,2) = w(5,8) = %.7f, w(2,5) = w(8,5) = %.7f (the regions differ)"
+      % (w[0], w[2]))
+height = -0.1 + 0.02 * math.cos(0.7 * math.pi) * math.cos(math.pi)
+pen = c["compliance_penetration"]
+check(abs(w[4] - (height + t / 2)) <= pen + 1e-5 and c["contact_force"] > 0,
+      "data_obstacle: the hole edge rests on the data, w(3.5,5) = %.7f = %.7f + t/2 "
+      "(penetration %.1e)" % (w[4], height, pen))
 finish()

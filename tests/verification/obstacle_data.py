@@ -48,8 +48,8 @@ end
 def write_grid(name, x, y, n, height):
     path = os.path.join(args.workdir, name)
     with open(path, "w") as f:
-        f.write("# heights on %d x %d points\n%r %r %d\n%r %r %d\n" % (n, n, x[0], x[1], n,
-                                                                    y[0], y[1], n))
+        f.write("# heights on %d x %d points\n%r %r %d   # x_min x_max n_x\n"
+                "%r %r %d   # y_min y_max n_y\n" % (n, n, x[0], x[1], n, y[0], y[1], n))
         for j in range(n):
             yj = y[0] + (y[1] - y[0]) * j / (n - 1)
             f.write(" ".join(repr(height(x[0] + (x[1] - x[0]) * i / (n - 1), yj))

@@ -14,7 +14,7 @@ namespace NitscheContact
   /// Heights z(x, y) on the uniform grid of [x_min, x_max] x [y_min,
   /// y_max] with n_x x n_y points. The file (doc/parameters.md):
   ///
-  ///     # comment lines start with '#'; blank lines are skipped
+  ///     # '#' starts a comment; lines without data are skipped
   ///     x_min x_max n_x
   ///     y_min y_max n_y
   ///     z(x_0, y_0) z(x_1, y_0) ... z(x_{n_x-1}, y_0)
