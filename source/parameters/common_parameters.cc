@@ -538,6 +538,20 @@ namespace NitscheContact
           bad_value("Obstacle/Data file", "",
                     "'Type = data' needs a file of heights on a grid");
         obstacle_data = std::make_shared<const HeightData>(HeightData::read(file));
+        const Point<2> &a = obstacle_data->lower, &b = obstacle_data->upper;
+        if (a[0] > geometry.upper[0] || b[0] < geometry.lower[0] ||
+            a[1] > geometry.upper[1] || b[1] < geometry.lower[1])
+          bad_value("Obstacle/Data file", file,
+                    "its grid [" + number_to_string(a[0]) + ", " +
+                      number_to_string(b[0]) + "] x [" +
+                      number_to_string(a[1]) + ", " + number_to_string(b[1]) +
+                      "] does not reach the plate, whose bounding box is [" +
+                      number_to_string(geometry.lower[0]) + ", " +
+                      number_to_string(geometry.upper[0]) + "] x [" +
+                      number_to_string(geometry.lower[1]) + ", " +
+                      number_to_string(geometry.upper[1]) +
+                      "]; allowed: a grid over (a part of) the plate, in "
+                      "the plate's coordinates and units");
       }
     obstacle_level = prm.get_double("Level");
     const auto c   = parse_doubles(prm.get("Sphere center"),

@@ -30,9 +30,13 @@ namespace NitscheContact
       std::string              field;
       while (fields >> field)
         {
+          // decimal numbers only (strtod also reads hexadecimal ones)
+          const bool decimal =
+            field.find_first_not_of("0123456789+-.eE") == std::string::npos;
           char        *end   = nullptr;
           const double value = std::strtod(field.c_str(), &end);
-          if (end == field.c_str() || *end != '\0')
+          if (end == field.c_str() || *end != '\0' ||
+              (!decimal && std::isfinite(value)))
             throw InputError("obstacle data file '" + path + "', line " +
                              std::to_string(line_number) + ": '" + field +
                              "' is not a number");
@@ -102,14 +106,14 @@ namespace NitscheContact
       error(data.lines[1].first, "n_x n_y = " +
                                    number_to_string(double(nx) * ny) +
                                    " values; allowed are at most 1e8");
-    // n_y rows of n_x values
+    // n_y rows of n_x values (counted before the table is allocated)
+    if (data.lines.size() < 2 + ny)
+      error(0, "the file ends after " + std::to_string(data.lines.size() - 2) +
+                 " of its " + std::to_string(ny) + " rows of heights (n_y = " +
+                 std::to_string(ny) + ")");
     result.values.reinit(nx, ny);
     for (unsigned int j = 0; j < ny; ++j)
       {
-        if (data.lines.size() <= 2 + j)
-          error(0, "the file ends after " + std::to_string(j) + " of its " +
-                     std::to_string(ny) + " rows of heights (n_y = " +
-                     std::to_string(ny) + ")");
         const auto &[number, text] = data.lines[2 + j];
         const auto  v              = numbers_of(path, number, text);
         if (v.size() != nx)

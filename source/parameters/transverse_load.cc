@@ -47,11 +47,11 @@ namespace NitscheContact
                     "'1: -0.02; 2: 0'");
         const std::string key = Utilities::trim(item.substr(0, colon));
         const bool        digits =
-          !key.empty() && key.size() <= 9 &&
+          !key.empty() && key.size() <= 10 &&
           std::all_of(key.begin(), key.end(), [](const char ch) {
             return std::isdigit(static_cast<unsigned char>(ch));
           });
-        if (!digits || std::stoul(key) >= numbers::invalid_material_id)
+        if (!digits || std::stoull(key) >= numbers::invalid_material_id)
           bad_value(entry, text,
                     "'" + key + "' is no material id; allowed are the ids 0 "
                     "to " + std::to_string(numbers::invalid_material_id - 1));
@@ -59,7 +59,7 @@ namespace NitscheContact
         if (value.size() != 1)
           bad_value(entry, text,
                     "expected one number after '" + key + ":'");
-        const auto id = static_cast<types::material_id>(std::stoul(key));
+        const auto id = static_cast<types::material_id>(std::stoull(key));
         if (!loads.emplace(id, value[0]).second)
           bad_value(entry, text, "material id " + key + " is named twice");
         if (geometry.material_ids.count(id) == 0)

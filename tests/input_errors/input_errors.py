@@ -480,10 +480,10 @@ CASES.append(("Kirchhoff on a mesh file of unequal rectangles",
               "  set Mesh file = graded.msh\nend",
               ["Geometry/Mesh file", "graded.msh", "(0.625 0), (2.5 0), (0.625 2.5), (2.5 2.5)",
                "is not of the size 0.625 x 2.5 of the mesh's first cell"]))
-CASES.append(("the 3D plate predictor asked for on the L-shape",
-              "subsection Geometry\n  set Shape = L-shape\n  set Subdivisions = 2, 2, 1\nend\n"
+CASES.append(("the 3D plate predictor asked for with two load steps",
+              "subsection Nonlinear solver\n  set Load steps = 2\nend\n"
               "subsection Elasticity\n  set Plate predictor = true\nend",
-              ["Elasticity/Plate predictor", "'true'", "rectangle only"]))
+              ["Elasticity/Plate predictor", "'true'", "Load steps = 1"]))
 CASES.append(("boundary id 1000 on the rectangle",
               "subsection Geometry\n  set Boundary conditions = 1000: free; "
               "all: clamped\nend",
@@ -512,6 +512,17 @@ for (case, text, expected), name in zip(DATA_FILES, ("short", "missing", "letter
         f.write(text)
     CASES.append((case, "subsection Obstacle\n  set Type = data\n  set Data file = %s.txt\nend"
                   % name, ["obstacle data file", "error"] + expected))
+with open(os.path.join(args.workdir, "hex.txt"), "w") as f:
+    f.write("0 10 2\n0 10 2\n-1 -0x1p3\n-1 -1\n")
+CASES.append(("data file, a hexadecimal number",
+              "subsection Obstacle\n  set Type = data\n  set Data file = hex.txt\nend",
+              ["obstacle data file 'hex.txt'", "line 3", "'-0x1p3' is not a number"]))
+with open(os.path.join(args.workdir, "far.txt"), "w") as f:
+    f.write("20 30 2\n20 30 2\n-1 -1\n-1 -1\n")
+CASES.append(("data grid beside the plate",
+              "subsection Obstacle\n  set Type = data\n  set Data file = far.txt\nend",
+              ["Obstacle/Data file", "far.txt", "[20, 30] x [20, 30]", "does not reach the plate",
+               "[0, 10] x [0, 10]"]))
 CASES.append(("data obstacle without a file",
               "subsection Obstacle\n  set Type = data\nend",
               ["Obstacle/Data file", "needs a file"]))

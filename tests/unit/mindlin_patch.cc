@@ -21,9 +21,23 @@
 //     interpolant of the Kirchhoff deflection -x^3/3 has zero MITC9 shear
 //     (the interpolation errors of x^2 at the Gauss points and of x^3 at
 //     the Q2 nodes cancel), while the plain Q2 shear does not vanish.
+// MITC4 on a distorted quadrilateral (the covariant tying of ShearTying
+// with the cell's Jacobians; the element-level plate patch test):
+//  7. constant shear states: w linear and phi = -grad w + g (g constant),
+//     both exact in isoparametric Q1, give gamma_h = g at every point;
+//  8. constant curvature: w the nodal interpolant of a quadratic q and phi
+//     = -grad q (linear, exact in Q1) give gamma_h = 0 at every point (the
+//     tied covariant strain on a straight edge is the chord slope of q plus
+//     phi at the edge's midpoint, which cancel for a quadratic) and the
+//     curvatures grad phi_h = -Hess q exactly, so a patch of such cells
+//     reproduces the Kirchhoff states of constant moment.
 #include <deal.II/base/logstream.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/tria.h>
 
 #include <nitsche_contact/models/mindlin/mindlin_model.h>
 
@@ -70,6 +84,66 @@ namespace
         v[i]              = f(Point<2>(u[0] * hx, u[1] * hy))[ci.first];
       }
     return v;
+  }
+
+  // MITC4 on one distorted cell: gamma_h and grad phi_h of the field whose
+  // nodal values are f (w, phi_x, phi_y) at the real vertices, at unit
+  // points `at`; the largest |gamma_h - g| and |grad phi_h - G|
+  template <typename F>
+  std::pair<double, double>
+  distorted_cell_errors(const F                   &f,
+                        const Tensor<1, 2>        &g,
+                        const Tensor<2, 2>        &G,
+                        const std::vector<Point<2>> &at)
+  {
+    const FESystem<2> fe(FE_Q<2>(1), 3);
+    Triangulation<2>  tria;
+    GridGenerator::general_cell(tria,
+                                {Point<2>(0., 0.), Point<2>(1.1, 0.1),
+                                 Point<2>(0.2, 0.9), Point<2>(1.3, 1.2)});
+    const auto         cell = tria.begin_active();
+    const MappingQ1<2> mapping;
+    const MindlinModel::ShearTying tying(fe, MindlinModel::Shear::mitc4);
+    const auto                     tying_points = tying.all_points();
+    FEValues<2> at_tying(mapping, fe, Quadrature<2>(tying_points), update_jacobians);
+    at_tying.reinit(cell);
+    std::vector<DerivativeForm<1, 2, 2>> jacobians;
+    for (unsigned int q = 0; q < tying_points.size(); ++q)
+      jacobians.push_back(at_tying.jacobian(q));
+
+    // nodal values and the tied covariant strains of the field
+    std::vector<double>                values(fe.n_dofs_per_cell());
+    std::array<std::vector<double>, 2> e_field, e_i;
+    for (unsigned int b = 0; b < 2; ++b)
+      e_field[b].assign(tying.points[b].size(), 0.);
+    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+      {
+        const auto ci = fe.system_to_component_index(i);
+        values[i]     = f(cell->vertex(ci.second))[ci.first];
+        tying.covariant_strains(ci.first, i, jacobians, e_i);
+        for (unsigned int b = 0; b < 2; ++b)
+          for (unsigned int t = 0; t < e_i[b].size(); ++t)
+            e_field[b][t] += values[i] * e_i[b][t];
+      }
+    FEValues<2> at_points(mapping, fe, Quadrature<2>(at),
+                          update_inverse_jacobians | update_gradients);
+    at_points.reinit(cell);
+    double shear_error = 0., curvature_error = 0.;
+    for (unsigned int q = 0; q < at.size(); ++q)
+      {
+        const Tensor<1, 2> gamma = MindlinModel::ShearTying::strain(
+          tying.weights(at[q]), e_field, at_points.inverse_jacobian(q));
+        shear_error = std::max(shear_error, (gamma - g).norm());
+        Tensor<2, 2> grad_phi;
+        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+          {
+            const unsigned int c = fe.system_to_component_index(i).first;
+            if (c >= 1)
+              grad_phi[c - 1] += values[i] * at_points.shape_grad(i, q);
+          }
+        curvature_error = std::max(curvature_error, (grad_phi - G).norm());
+      }
+    return {shear_error, curvature_error};
   }
 } // namespace
 
@@ -243,5 +317,35 @@ main()
                 << small(m.norm()) << ", plain Q2 gamma_x = "
                 << gamma(fe2, v, p, MindlinModel::Shear::full)[0] << std::endl;
       }
+  }
+
+  // 7./8. MITC4 on a distorted quadrilateral
+  {
+    std::vector<Point<2>> at;
+    for (const double u : {0., 0.23, 0.5, 1.})
+      for (const double v : {0., 0.61, 1.})
+        at.emplace_back(u, v);
+    const Tensor<1, 2> g({0.3, -1.2});
+    const auto         shear = distorted_cell_errors(
+      [&](const Point<2> &x) {
+        return std::array<double, 3>{{0.4 - 0.8 * x[0] + 1.1 * x[1],
+                                      0.8 + g[0], -1.1 + g[1]}};
+      },
+      g, Tensor<2, 2>(), at);
+    deallog << "distorted MITC4, w linear, phi = -grad w + g: max |gamma_h - g| "
+            << small(shear.first) << std::endl;
+    // q = 0.7 x^2 - 0.5 x y - 0.9 y^2 + 0.2 x: Hess q = (1.4, -0.5; -0.5, -1.8)
+    const auto bending = distorted_cell_errors(
+      [](const Point<2> &x) {
+        const double X = x[0], Y = x[1];
+        return std::array<double, 3>{{0.7 * X * X - 0.5 * X * Y - 0.9 * Y * Y + 0.2 * X,
+                                      -(1.4 * X - 0.5 * Y + 0.2),
+                                      -(-0.5 * X - 1.8 * Y)}};
+      },
+      Tensor<1, 2>(), Tensor<2, 2>({{-1.4, 0.5}, {0.5, 1.8}}), at);
+    deallog << "distorted MITC4, w = I_h q (q quadratic), phi = -grad q: max "
+               "|gamma_h| "
+            << small(bending.first) << ", max |grad phi_h + Hess q| "
+            << small(bending.second) << std::endl;
   }
 }

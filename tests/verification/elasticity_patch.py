@@ -161,7 +161,7 @@ for degree in (1, 2):
                           % (c["extra"]["stick_area"], c["extra"]["slip_area"]))
 
 # In-plane refinement ('Refine through thickness = false'): the nested start
-# carried to the next mesh through the lattice of support points must be the
+# carried to the next mesh by evaluation at its support points must be the
 # exact interpolant. The exact solution is linear, hence the same function on
 # both meshes: the first Newton correction of the refined cycle must vanish
 # (a wrong transfer gives |dU|_a/|U|_a of order one), and both cycles must

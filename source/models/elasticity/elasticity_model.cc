@@ -23,8 +23,12 @@ namespace NitscheContact
     , triangulation(comm)
     , fe(FE_Q<3>(read_degree(ph)), 3)
     // straight-edged cells are trilinear images of the unit cube; on
-    // circular edges the mapping has the element's degree
-    , mapping(common.geometry.has_curved_edges() ? read_degree(ph) : 1)
+    // circular edges the mapping has the element's degree, at least 2, so
+    // that the next cycle's points on the circle lie within a small
+    // fraction of a cell of this cycle's boundary (refine_in_plane())
+    , mapping(common.geometry.has_curved_edges() ?
+                std::max(2u, read_degree(ph)) :
+                1)
     , obstacle(common)
     , direct_solver(direct_solver_settings())
     , two_level("raise 'Contact/Nitsche gamma0' (its coercivity bound is "

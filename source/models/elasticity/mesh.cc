@@ -125,8 +125,9 @@ namespace NitscheContact
           point_of.push_back(points.size() - 1);
         }
     }
-    // a point on a circular edge may lie outside the old mesh's polynomial
-    // boundary by a fraction of its cell: it is taken from the nearest cell
+    // a new point on a circular edge lies outside the old cells' quadratic
+    // (or higher) boundary by a small fraction of a cell: within 1e-2 of
+    // the unit cell it is found in the cell next to it
     Utilities::MPI::RemotePointEvaluation<3> evaluation(1e-2);
     ghosted = solution;
     const auto values = VectorTools::point_values<3>(mapping, dof_handler,

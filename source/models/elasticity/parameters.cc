@@ -98,9 +98,8 @@ namespace NitscheContact
         "true: every cycle starts from the solution of a Mindlin plate "
         "(MITC4, frictionless, theta = 1) on the in-plane nodes of the "
         "cycle's mesh, lifted to 3D, instead of from the previous cycle's "
-        "solution; it needs the rectangle, the uniform mesh, 'Top face = "
-        "free' and "
-        "'Nonlinear solver/Load steps = 1'. 'auto' uses it where these "
+        "solution; it needs the uniform mesh (no 'Refinement box'), 'Top "
+        "face = free' and 'Nonlinear solver/Load steps = 1'. 'auto' uses it where these "
         "hold and says in the log why not otherwise; false starts from the "
         "previous cycle.");
       declare_linear_solver_parameters(prm);
@@ -231,7 +230,7 @@ namespace NitscheContact
         fraction *= std::max(0., b - a) / (hi[d] - lo[d]);
       }
     const double base =
-      double(prm.subdivisions[0]) * prm.subdivisions[1] *
+      double(prm.geometry.n_coarse_cells(prm.subdivisions)) *
       prm.subdivisions[2] * std::pow(8., prm.initial_refinement);
     const double cells =
       base * (1. + fraction * std::pow(8., local_refinement_steps));

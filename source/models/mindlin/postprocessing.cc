@@ -367,22 +367,41 @@ namespace NitscheContact
       const auto cell = locate(p, unit);
       if (cell == dof_handler.end())
         return false;
-      AssertThrow(uniform_cells,
-                  ExcMessage("plate_kinematics_at needs a uniform grid"));
       cell->get_dof_indices(dofs);
       v = {{0., 0., 0., 0.}};
-      for (unsigned int i = 0; i < n; ++i)
+      if (uniform_cells)
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const unsigned int c = fe.system_to_component_index(i).first;
+            const double       u = solution(dofs[i]);
+            if (c == w_component)
+              v[0] += u * fe.shape_value(i, unit);
+            else if (c == phi_component || c == phi_component + 1)
+              {
+                const unsigned int d = c - phi_component;
+                v[1 + d] += u * fe.shape_value(i, unit);
+                // axis-parallel rectangle of sides hx, hy: d/dx = d/dxi / hx
+                v[3] += u * fe.shape_grad(i, unit)[d] / (d == 0 ? hx : hy);
+              }
+          }
+      else
         {
-          const unsigned int c = fe.system_to_component_index(i).first;
-          const double       u = solution(dofs[i]);
-          if (c == w_component)
-            v[0] += u * fe.shape_value(i, unit);
-          else if (c == phi_component || c == phi_component + 1)
+          // any cell: the gradients through the mapping at the point
+          FEValues<2> values(mapping, fe, Quadrature<2>(unit),
+                             update_values | update_gradients);
+          values.reinit(cell);
+          for (unsigned int i = 0; i < n; ++i)
             {
-              const unsigned int d = c - phi_component;
-              v[1 + d] += u * fe.shape_value(i, unit);
-              // axis-parallel rectangle of sides hx, hy: d/dx = d/dxi / hx
-              v[3] += u * fe.shape_grad(i, unit)[d] / (d == 0 ? hx : hy);
+              const unsigned int c = fe.system_to_component_index(i).first;
+              const double       u = solution(dofs[i]);
+              if (c == w_component)
+                v[0] += u * values.shape_value(i, 0);
+              else if (c == phi_component || c == phi_component + 1)
+                {
+                  const unsigned int d = c - phi_component;
+                  v[1 + d] += u * values.shape_value(i, 0);
+                  v[3] += u * values.shape_grad(i, 0)[d];
+                }
             }
         }
       return true;
@@ -397,19 +416,23 @@ namespace NitscheContact
         // the central difference of the nodal rotations)
         double       div = 0.;
         unsigned int m   = 0;
+        const double dx = 1e-6 * (uniform_cells ? hx : prm.geometry.size()),
+                     dy = 1e-6 * (uniform_cells ? hy : prm.geometry.size());
         for (const double sx : {-1., 1.})
           for (const double sy : {-1., 1.})
             {
+              // (a point off the plate is not evaluated)
               const Point<2> q(
-                std::min(std::max(points[k][0] + sx * 1e-6 * hx, 0.),
-                         prm.length_x),
-                std::min(std::max(points[k][1] + sy * 1e-6 * hy, 0.),
-                         prm.length_y));
+                std::min(std::max(points[k][0] + sx * dx, prm.geometry.lower[0]),
+                         prm.geometry.upper[0]),
+                std::min(std::max(points[k][1] + sy * dy, prm.geometry.lower[1]),
+                         prm.geometry.upper[1]));
               std::array<double, 4> u;
               if (evaluate(q, u))
                 div += u[3], ++m;
             }
-        v[3]      = div / m;
+        if (m > 0)
+          v[3] = div / m;
         values[k] = v;
       }
     return values;

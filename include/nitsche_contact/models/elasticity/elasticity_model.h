@@ -504,6 +504,11 @@ namespace NitscheContact
     plate_predictor_precondition() const;
     void
     build_plate_predictor();
+    /// build_plate_predictor() on the rectangle: the plate on the grid of
+    /// the in-plane support points, with its own nested cycles from a
+    /// coarser grid and the multigrid where it pays
+    void
+    plate_on_rectangle(MindlinModel::Settings &settings);
     /// lift the plate's solution to the start U
     void
     lift_plate_solution();
