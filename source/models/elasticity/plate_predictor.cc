@@ -40,6 +40,16 @@ namespace NitscheContact
         no_predictor_reason = reason;
         return;
       }
+    // measured (doc/benchmarks.md): off the rectangle's grid the plate's
+    // cells are not alike, and locating the support points in them costs
+    // what the Newton iterations the start saves would
+    if (plate_predictor_setting == "auto" && !is_cartesian(prm.geometry.shape))
+      {
+        no_predictor_reason = "on the " + prm.geometry.shape_name() +
+                              " the plate saves no time; 'Plate predictor = "
+                              "true' uses it";
+        return;
+      }
     try
       {
         build_plate_predictor();
