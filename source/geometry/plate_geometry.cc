@@ -123,18 +123,14 @@ namespace NitscheContact
             bc.all = c;
             continue;
           }
-        const bool digits =
-          !key.empty() && key.size() <= 9 &&
-          std::all_of(key.begin(), key.end(), [](const char ch) {
-            return std::isdigit(static_cast<unsigned char>(ch));
-          });
-        if (!digits)
+        const auto number = parse_id(key);
+        if (!number || *number > 999999999)
           bad_value(conditions_entry,
                     text,
                     "'" + key +
                       "' is no boundary id; allowed are 'all' and the ids "
                       "0 to 999999999");
-        const auto id = static_cast<types::boundary_id>(std::stoul(key));
+        const auto id = static_cast<types::boundary_id>(*number);
         if (!bc.by_id.emplace(id, c).second)
           bad_value(conditions_entry,
                     text,

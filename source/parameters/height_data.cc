@@ -12,12 +12,6 @@ namespace NitscheContact
 {
   namespace
   {
-    /// The lines of a file that carry data, with their numbers.
-    struct DataLines
-    {
-      std::vector<std::pair<unsigned int, std::string>> lines;
-    };
-
     /// The whitespace-separated fields of a line, each a finite number;
     /// InputError naming the file and the line otherwise.
     std::vector<double>
@@ -59,14 +53,15 @@ namespace NitscheContact
                 "the file cannot be read; allowed: a readable file of "
                 "heights on a uniform grid (doc/parameters.md), a relative "
                 "path taken from the directory the program runs in");
-    DataLines   data;
+    // the lines that carry data, with their numbers
+    std::vector<std::pair<unsigned int, std::string>> lines;
     std::string line;
     for (unsigned int number = 1; std::getline(in, line); ++number)
       {
         // '#' starts a comment; lines without data are skipped
         const std::string text = line.substr(0, line.find('#'));
         if (text.find_first_not_of(" \t\r") != std::string::npos)
-          data.lines.emplace_back(number, text);
+          lines.emplace_back(number, text);
       }
     const auto error = [&](const unsigned int number, const std::string &what) {
       throw InputError("obstacle data file '" + path + "'" +
@@ -80,10 +75,10 @@ namespace NitscheContact
     for (unsigned int d = 0; d < 2; ++d)
       {
         const std::string axis = d == 0 ? "x" : "y";
-        if (data.lines.size() <= d)
+        if (lines.size() <= d)
           error(0, "the file ends before its header line '" + axis + "_min " +
                      axis + "_max n_" + axis + "'");
-        const auto &[number, text] = data.lines[d];
+        const auto &[number, text] = lines[d];
         const auto  v              = numbers_of(path, number, text);
         if (v.size() != 3)
           error(number, "expected the header '" + axis + "_min " + axis +
@@ -103,18 +98,18 @@ namespace NitscheContact
       }
     const unsigned int nx = result.n_points[0], ny = result.n_points[1];
     if (static_cast<double>(nx) * ny > 1e8)
-      error(data.lines[1].first, "n_x n_y = " +
+      error(lines[1].first, "n_x n_y = " +
                                    number_to_string(double(nx) * ny) +
                                    " values; allowed are at most 1e8");
     // n_y rows of n_x values (counted before the table is allocated)
-    if (data.lines.size() < 2 + ny)
-      error(0, "the file ends after " + std::to_string(data.lines.size() - 2) +
+    if (lines.size() < 2 + ny)
+      error(0, "the file ends after " + std::to_string(lines.size() - 2) +
                  " of its " + std::to_string(ny) + " rows of heights (n_y = " +
                  std::to_string(ny) + ")");
     result.values.reinit(nx, ny);
     for (unsigned int j = 0; j < ny; ++j)
       {
-        const auto &[number, text] = data.lines[2 + j];
+        const auto &[number, text] = lines[2 + j];
         const auto  v              = numbers_of(path, number, text);
         if (v.size() != nx)
           error(number, "row " + std::to_string(j + 1) + " of the heights has " +
@@ -123,8 +118,8 @@ namespace NitscheContact
         for (unsigned int i = 0; i < nx; ++i)
           result.values(i, j) = v[i];
       }
-    if (data.lines.size() > 2 + ny)
-      error(data.lines[2 + ny].first,
+    if (lines.size() > 2 + ny)
+      error(lines[2 + ny].first,
             "more rows than n_y = " + std::to_string(ny));
     return result;
   }

@@ -85,6 +85,16 @@ namespace NitscheContact
   check_finite_on_plate<3>(const Function<3> &, const std::string &,
                            const std::string &, const PlateGeometry &, double, bool);
 
+  std::optional<unsigned long long>
+  parse_id(const std::string &text)
+  {
+    const std::string key = dealii::Utilities::trim(text);
+    if (key.empty() || key.size() > 10 ||
+        key.find_first_not_of("0123456789") != std::string::npos)
+      return std::nullopt;
+    return std::stoull(key);
+  }
+
   std::vector<double>
   parse_doubles(const std::string &text,
                 const std::string &entry,

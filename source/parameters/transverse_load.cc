@@ -4,8 +4,6 @@
 #include <nitsche_contact/parameters.h>
 #include <nitsche_contact/parameters/transverse_load.h>
 
-#include <algorithm>
-#include <cctype>
 
 namespace NitscheContact
 {
@@ -45,13 +43,9 @@ namespace NitscheContact
           bad_value(entry, text,
                     "expected items 'id: value' separated by ';', e.g. "
                     "'1: -0.02; 2: 0'");
-        const std::string key = Utilities::trim(item.substr(0, colon));
-        const bool        digits =
-          !key.empty() && key.size() <= 10 &&
-          std::all_of(key.begin(), key.end(), [](const char ch) {
-            return std::isdigit(static_cast<unsigned char>(ch));
-          });
-        if (!digits || std::stoull(key) >= numbers::invalid_material_id)
+        const std::string key    = Utilities::trim(item.substr(0, colon));
+        const auto        number = parse_id(key);
+        if (!number || *number >= numbers::invalid_material_id)
           bad_value(entry, text,
                     "'" + key + "' is no material id; allowed are the ids 0 "
                     "to " + std::to_string(numbers::invalid_material_id - 1));
@@ -59,7 +53,7 @@ namespace NitscheContact
         if (value.size() != 1)
           bad_value(entry, text,
                     "expected one number after '" + key + ":'");
-        const auto id = static_cast<types::material_id>(std::stoull(key));
+        const auto id = static_cast<types::material_id>(*number);
         if (!loads.emplace(id, value[0]).second)
           bad_value(entry, text, "material id " + key + " is named twice");
         if (geometry.material_ids.count(id) == 0)

@@ -13,6 +13,7 @@
 
 #include <memory>
 #include <new>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -41,6 +42,12 @@ namespace NitscheContact
   parse_doubles(const std::string &text,
                 const std::string &entry,
                 char               separator);
+
+  /// The number that `text` (blanks trimmed) spells in at most 10 decimal
+  /// digits, for the ids of entries like 'Geometry/Boundary conditions';
+  /// nothing for any other text.
+  std::optional<unsigned long long>
+  parse_id(const std::string &text);
 
   /// prm.declare_entry() with the values the pattern allows appended to
   /// the documentation ("Allowed: ..."), so that --print-parameters, which
