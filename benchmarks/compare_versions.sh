@@ -30,15 +30,15 @@ run() {
   rm -rf "$out"
   case "$case_name" in
     3d)
-      sed -e "s#set Directory .*#set Directory = $out#" \
-          -e "s#set Format .*#set Format = none#" \
-          "$dir/parameters/paper_3d_large.prm" > "$work/$tag.prm"
+      { cat "$dir/parameters/paper_3d_large.prm"
+        printf 'subsection Output\n  set Directory = %s\n  set Format = none\nend\n' "$out"
+      } > "$work/$tag.prm"
       /usr/bin/time -v mpirun -np 2 "$dir/build/nitsche-contact" "$work/$tag.prm" \
         > "$work/log" 2> "$work/time" || { tail "$work/log" "$work/time"; exit 1; } ;;
     mindlin)
-      sed -e "s#set Directory .*#set Directory = $out#" \
-          -e "s#set Format .*#set Format = none#" \
-          "$dir/parameters/paper_mindlin_large.prm" > "$work/$tag.prm"
+      { cat "$dir/parameters/paper_mindlin_large.prm"
+        printf 'subsection Output\n  set Directory = %s\n  set Format = none\nend\n' "$out"
+      } > "$work/$tag.prm"
       /usr/bin/time -v "$dir/build/nitsche-contact" "$work/$tag.prm" \
         > "$work/log" 2> "$work/time" || { tail "$work/log" "$work/time"; exit 1; } ;;
     kirchhoff)

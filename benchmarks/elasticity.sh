@@ -76,17 +76,33 @@ case "$subdivisions" in
 esac
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-sed -e "s/^\( *set Number of cycles *=\).*/\1 $cycles/" \
-    -e "s/^\( *set Subdivisions *=\).*/\1 $subdivisions, $subdivisions, 1/" \
-    -e "s/^\( *set Tolerance *=\).*/\1 1e-6/" \
-    -e "s/^\( *set Nitsche gamma0 *=\).*/\1 $gamma0/" \
-    -e "s/^\( *set Maximum iterations *=\).*/\1 300/" \
-    -e "s|^\( *set Directory *=\).*|\1 $work/out|" \
-    -e "s/^\( *set Format *=\).*/\1 none/" \
-    -e "s/^\( *set Print timings *=\).*/\1 true/" \
-    -e "s/^\( *set Load applied as *=.*\)/\1\n  subsection Linear solver\n    set Type = $solver\n    set Krylov tolerance = $krylov\n    set Symmetric factorization = $symmetric\n  end/" \
-    -e "s/^\( *set Refine through thickness *=\).*/\1 $through\n  set Contact quadrature rule = $rule\n  set Plate predictor = $predictor/" \
-    "$here/parameters/paper_3d.prm" > "$work/bench.prm"
+# the paper's file with this run's entries after it (a later 'set' wins)
+{ cat "$here/parameters/paper_3d.prm"
+  cat <<EOF
+subsection Geometry
+  set Number of cycles = $cycles
+  set Subdivisions     = $subdivisions, $subdivisions, 1
+end
+subsection Contact
+  set Nitsche gamma0 = $gamma0
+end
+subsection Elasticity
+  set Refine through thickness = $through
+  set Contact quadrature rule  = $rule
+  set Plate predictor          = $predictor
+  subsection Linear solver
+    set Type                    = $solver
+    set Krylov tolerance        = $krylov
+    set Symmetric factorization = $symmetric
+  end
+end
+subsection Output
+  set Directory     = $work/out
+  set Format        = none
+  set Print timings = true
+end
+EOF
+} > "$work/bench.prm"
 run=("$exe")
 if [ "$ranks" -gt 1 ]; then run=(mpirun -np "$ranks" "$exe"); fi
 start=$(date +%s.%N)

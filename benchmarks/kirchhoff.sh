@@ -38,15 +38,34 @@ case "$obstacle" in
 esac
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-sed -e "s/set Number of cycles = .*/set Number of cycles = $cycles/" \
-    -e "s#set Directory = .*#set Directory = $work/out#" \
-    -e "s/set Format = vtu/set Format = none\n  set Print timings = true/" \
-    -e "s/set Tolerance = .*/set Tolerance = $tol/" \
-    -e "s/set Maximum iterations = 100/set Maximum iterations = 100\n  set Print iterations = false\n  set Active-set stop = $stop/" \
-    -e "s/set Quadrature points = 6/set Quadrature points = 6\n  subsection Linear solver\n    set Type = $solver\n  end/" \
-    -e "s/set Stabilisation alpha = .*/set Stabilisation alpha = $alpha/" \
-    -e "s/set Nitsche theta = 1/set Nitsche theta = 1\n  set Obstacle compliance = $kappa/" \
-    "$here/parameters/paper_kirchhoff.prm" > "$work/bench.prm"
+# the paper's file with this run's entries after it (a later 'set' wins)
+{ cat "$here/parameters/paper_kirchhoff.prm"
+  cat <<EOF
+subsection Geometry
+  set Number of cycles = $cycles
+end
+subsection Contact
+  set Obstacle compliance = $kappa
+end
+subsection Kirchhoff
+  set Stabilisation alpha = $alpha
+  subsection Linear solver
+    set Type = $solver
+  end
+end
+subsection Nonlinear solver
+  set Tolerance          = $tol
+  set Maximum iterations = 100
+  set Print iterations   = false
+  set Active-set stop    = $stop
+end
+subsection Output
+  set Directory     = $work/out
+  set Format        = none
+  set Print timings = true
+end
+EOF
+} > "$work/bench.prm"
 /usr/bin/time -v "$build/nitsche-contact" "$work/bench.prm" > "$work/log" 2> "$work/time" ||
   { cat "$work/log" "$work/time"; exit 1; }
 python3 - "$work/out/summary.json" <<'PY'

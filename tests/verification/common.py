@@ -15,7 +15,58 @@ def parse_args():
     p.add_argument("--exe", required=True)
     p.add_argument("--mpiexec", default="mpiexec")
     p.add_argument("--workdir", required=True)
-    return p.parse_args()
+    args = p.parse_args()
+    global _exe
+    _exe = args.exe
+    return args
+
+
+# the executable of the run, for the parameter listing set_entries() reads
+_exe = None
+_entry_paths = None
+
+
+def entry_subsections(entry, text):
+    """The subsections of `entry` in nitsche-contact's parameter listing; an
+    entry name found in several (e.g. 'Contact quadrature rule') is taken
+    from the subsection of the model that `text` sets."""
+    global _entry_paths
+    if _entry_paths is None:
+        listing = subprocess.run([_exe, "--print-parameters"], check=True,
+                                 stdout=subprocess.PIPE, text=True).stdout
+        _entry_paths, stack = [], []
+        for line in listing.splitlines():
+            line = line.split("#")[0].strip()
+            if line.startswith("subsection "):
+                stack.append(line[len("subsection "):].strip())
+            elif line == "end":
+                stack.pop()
+            elif line.startswith("set "):
+                _entry_paths.append(stack + [line[4:].split("=")[0].strip()])
+    found = [p[:-1] for p in _entry_paths if p[-1] == entry]
+    if len(found) > 1:
+        m = re.search(r"(?m)^\s*set Model\s*=\s*(\w+)", text)
+        model = (m.group(1) if m else "elasticity").capitalize()
+        found = [p for p in found if p and p[0] == model]
+    if len(found) != 1:
+        fail("entry '%s': %d subsections in the parameter listing" % (entry, len(found)))
+    return found[0]
+
+
+def set_entries(text, entries, name):
+    """Set each (entry, value) of entries in the parameter text: replace
+    its 'set' line, or, for an entry the text leaves at its default, append
+    it in its subsection. An entry set more than once fails a check named
+    after `name`."""
+    for entry, value in entries:
+        text, n = re.subn(r"(?m)^(\s*set %s\s*=).*$" % re.escape(entry),
+                          lambda m: m.group(1) + " " + value, text)
+        if n == 0:
+            path = entry_subsections(entry, text)
+            text += ("\n" + "".join("subsection %s\n" % s for s in path) +
+                     "  set %s = %s\n" % (entry, value) + "end\n" * len(path))
+        check(n <= 1, "%s: at most one entry '%s'" % (name, entry))
+    return text
 
 
 # The discrete problem most tests check: the rigid obstacle, Gauss contact
@@ -139,16 +190,11 @@ def first_corrections(log):
 
 def shipped_prm(name, replacements, extra=""):
     """The text of parameters/<name> (or of the file at the absolute path
-    name) with 'set <entry> = value' replaced for each (entry, value) of
-    replacements (each entry must occur exactly once), followed by extra."""
+    name) with each (entry, value) of replacements set (set_entries()),
+    followed by extra."""
     here = os.path.dirname(os.path.abspath(__file__))
     path = name if os.path.isabs(name) else os.path.join(here, "..", "..", "parameters", name)
-    text = open(path).read()
-    for pattern, value in replacements:
-        text, n = re.subn(r"(?m)^(\s*set %s\s*=).*$" % re.escape(pattern),
-                          lambda m: m.group(1) + " " + value, text)
-        check(n == 1, "%s: one entry '%s'" % (name, pattern))
-    return text + extra
+    return set_entries(open(path).read(), replacements, name) + extra
 
 
 # The elastic block of verification/elasticity_friction pressed onto a plane
@@ -212,16 +258,6 @@ def check(condition, message):
 def fail(message):
     print("FAIL  " + message)
     sys.exit(1)
-
-
-def edit(text, entries, name):
-    """Set each (entry, value) of entries in the parameter text; each entry
-    must occur exactly once (a check named after `name`)."""
-    for entry, value in entries:
-        text, n = re.subn(r"(?m)^(\s*set %s\s*=).*$" % re.escape(entry),
-                          lambda m: m.group(1) + " " + value, text)
-        check(n == 1, "%s: one entry '%s'" % (name, entry))
-    return text
 
 
 def close(value, reference, rel_tol, what):

@@ -19,9 +19,9 @@ most 30 GMRES iterations per Newton step on average over every cycle
 doc/benchmarks.md), Q1 at most 60 (measured 21 in this case), and the mean of
 the finer cycle at most 1.5 times that of the coarser plus 3.
 Meshes it cannot serve are input errors (tests/input_errors)."""
-import os, re, sys
+import os, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import parse_args, run, check, close, edit, finish
+from common import parse_args, run, check, close, set_entries, finish
 
 args = parse_args()
 here = os.path.dirname(os.path.abspath(__file__))
@@ -62,7 +62,7 @@ def per_step(summary, what, limit=30):
 
 
 paper = open(os.path.join(params, "paper_3d.prm")).read()
-paper = edit(paper, [("Number of cycles", "2")], "paper_3d")
+paper = set_entries(paper, [("Number of cycles", "2")], "paper_3d")
 direct, _ = run(args, "paper_direct", paper)
 tl, log = run(args, "paper_two_level", two_level(paper))
 tl2, _ = run(args, "paper_two_level_np2", two_level(paper), np=2)
@@ -73,8 +73,8 @@ for s, what in ((tl, "paper Q2, 1 rank"), (tl2, "paper Q2, 2 ranks")):
     m = per_step(s, what)
     check(m[1] <= 1.5 * m[0] + 3, what + ": GMRES iterations per step do not grow with the mesh")
 
-q1 = edit(paper, [("Polynomial degree", "1"), ("Subdivisions", "16, 16, 1"),
-                  ("Number of cycles", "1"), ("Level", "-0.01")], "q1")
+q1 = set_entries(paper, [("Polynomial degree", "1"), ("Subdivisions", "16, 16, 1"),
+                         ("Number of cycles", "1"), ("Level", "-0.01")], "q1")
 q1d, _ = run(args, "q1_direct", q1)
 q1t, _ = run(args, "q1_two_level", two_level(q1))
 check(q1d["cycles"][0]["contact_force"] > 0 and q1d["cycles"][0]["contact_area"] > 0,
@@ -83,14 +83,14 @@ same(q1d, q1t, "Q1")
 per_step(q1t, "Q1", limit=60)
 
 friction = open(os.path.join(params, "paper_3d_friction.prm")).read()
-friction = edit(friction, [("Number of cycles", "1")], "friction")
+friction = set_entries(friction, [("Number of cycles", "1")], "friction")
 fd, _ = run(args, "friction_direct", friction)
 ft, _ = run(args, "friction_two_level", two_level(friction))
 check(dict(ft["cycles"][0]["extra"])["tangential_force"] > 0, "friction: a tangential reaction")
 same(fd, ft, "friction F = 0.2", tangential=True)
 per_step(ft, "friction F = 0.2")
 
-theta = edit(paper, [("Nitsche theta", "-1"), ("Number of cycles", "1")], "theta")
+theta = set_entries(paper, [("Nitsche theta", "-1"), ("Number of cycles", "1")], "theta")
 thd, _ = run(args, "theta_direct", theta)
 tht, _ = run(args, "theta_two_level", two_level(theta))
 same(thd, tht, "theta = -1")

@@ -2,8 +2,12 @@
 parameters/parameter_reference.py writes from `nitsche-contact
 --print-parameters` (every entry, its default and its help). A changed entry
 without the regenerated page fails here; regenerate with
-  python3 parameters/parameter_reference.py build/nitsche-contact > doc/parameters.md"""
-import os, subprocess, sys
+  python3 parameters/parameter_reference.py build/nitsche-contact > doc/parameters.md
+
+The paper files (parameters/paper_*.prm, kirchhoff_nitsche.prm) set only
+entries whose value differs from the default ('Model' apart, which names
+the file's model), so that a change of a default reaches them."""
+import glob, os, re, subprocess, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from common import parse_args, check, finish
 
@@ -18,4 +22,30 @@ check(page.count("\n- **`") == n_set,
       "the page lists all %d entries of --print-parameters" % n_set)
 with open(os.path.join(root, "doc", "parameters.md")) as f:
     check(f.read() == page, "doc/parameters.md is up to date")
+
+
+def entries(text):
+    """{subsection path/entry: value} of a parameter text."""
+    found, stack = {}, []
+    for line in text.splitlines():
+        line = line.split("#")[0].strip()
+        if line.startswith("subsection "):
+            stack.append(line[len("subsection "):].strip())
+        elif line == "end":
+            stack.pop()
+        else:
+            m = re.match(r"set\s+(.*?)\s*=\s*(.*)$", line)
+            if m:
+                found["/".join(stack + [m.group(1)])] = m.group(2).strip()
+    return found
+
+
+defaults = entries(listing)
+papers = sorted(glob.glob(os.path.join(root, "parameters", "paper_*.prm")) +
+                [os.path.join(root, "parameters", "kirchhoff_nitsche.prm")])
+for path in papers:
+    same = [k for k, v in entries(open(path).read()).items()
+            if k != "Model" and defaults.get(k) == v]
+    check(not same, "%s sets only entries that differ from their defaults%s"
+          % (os.path.basename(path), (" (not: %s)" % "; ".join(same)) if same else ""))
 finish()
