@@ -6,20 +6,23 @@
 #               1,052,676 DoFs), multigrid, Newton tolerance 1e-9
 #   mindlin     parameters/paper_mindlin_large.prm (1,232,643 DoFs)
 #   3d          parameters/paper_3d_large.prm on 2 MPI ranks (281,961 DoFs)
+#   membrane    parameters/membrane.prm (step-41's obstacle) over 7 cycles
+#               (16^2 -> 1024^2 Q1 cells, 1,050,625 DoFs)
 # Prints a markdown table: Newton iterations per cycle, wall-clock seconds
 # (/usr/bin/time), the reaction and the probe deflections of the last cycle,
-# and the time ratio auto/rigid.
+# and how far they moved from the cycle before (the largest change of the
+# reaction and of any probe; none for a run of one cycle).
 #   usage: benchmarks/compliance.sh [BUILD_DIR] [CASES]
-# CASES is a list like "kirchhoff mindlin 3d" (the default). Build in
-# Release first.
+# CASES is a list like "kirchhoff mindlin 3d membrane" (the default). Build
+# in Release first.
 set -e
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$here/build}
-cases=${2:-"kirchhoff mindlin 3d"}
+cases=${2:-"kirchhoff mindlin 3d membrane"}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-echo "| case | compliance | kappa | Newton iterations per cycle | wall [s] | reaction | probes |"
-echo "|---|---|---|---|---|---|---|"
+echo "| case | compliance | kappa | Newton iterations per cycle | wall [s] | reaction | probes | last change: reaction, probes |"
+echo "|---|---|---|---|---|---|---|---|"
 for case in $cases; do
   case "$case" in
     kirchhoff)
@@ -27,7 +30,10 @@ for case in $cases; do
       extra="subsection Geometry\n  set Number of cycles = 6\nend\nsubsection Nonlinear solver\n  set Tolerance = 1e-9\nend\nsubsection Kirchhoff\n  subsection Linear solver\n    set Type = multigrid\n  end\nend" ;;
     mindlin) prm="$here/parameters/paper_mindlin_large.prm"; launch=""; extra="" ;;
     3d) prm="$here/parameters/paper_3d_large.prm"; launch="mpirun -np 2"; extra="" ;;
-    *) echo "benchmarks/compliance.sh: unknown case '$case' (kirchhoff, mindlin, 3d)" >&2; exit 1 ;;
+    membrane)
+      prm="$here/parameters/membrane.prm"; launch=""
+      extra="subsection Geometry\n  set Number of cycles = 7\nend\nsubsection Output\n  set Contact points = false\nend" ;;
+    *) echo "benchmarks/compliance.sh: unknown case '$case' (kirchhoff, mindlin, 3d, membrane)" >&2; exit 1 ;;
   esac
   for compliance in 0 auto; do
     out="$work/$case-$compliance"
@@ -41,10 +47,14 @@ import json, sys
 s = json.load(open(sys.argv[1]))
 c = s["cycles"]
 wall = float(open(sys.argv[2]).read().split()[-1])
-print("| %s | %s | %.3g | %s | %.1f | %.7f | %s |" % (
+change = "—"
+if len(c) > 1:
+    change = "%.2g, %.2g" % (abs(c[-1]["contact_force"] - c[-2]["contact_force"]),
+                             max(abs(a - b) for a, b in zip(c[-1]["probes"], c[-2]["probes"])))
+print("| %s | %s | %.3g | %s | %.1f | %.7f | %s | %s |" % (
     sys.argv[3], sys.argv[4], c[-1]["obstacle_compliance"],
     ", ".join(str(x["nonlinear_iterations"]) for x in c), wall, c[-1]["contact_force"],
-    ", ".join("%.7f" % w for w in c[-1]["probes"])))
+    ", ".join("%.7f" % w for w in c[-1]["probes"]), change))
 PY
   done
 done
