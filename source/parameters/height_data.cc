@@ -53,16 +53,27 @@ namespace NitscheContact
                 "the file cannot be read; allowed: a readable file of "
                 "heights on a uniform grid (doc/parameters.md), a relative "
                 "path taken from the directory the program runs in");
-    // the lines that carry data, with their numbers
+    // the lines that carry data, with their numbers; a line ends with
+    // "\n", "\r\n" or "\r" (the files of any platform)
+    std::ostringstream content_stream;
+    content_stream << in.rdbuf();
+    const std::string content = content_stream.str();
     std::vector<std::pair<unsigned int, std::string>> lines;
-    std::string line;
-    for (unsigned int number = 1; std::getline(in, line); ++number)
-      {
-        // '#' starts a comment; lines without data are skipped
-        const std::string text = line.substr(0, line.find('#'));
-        if (text.find_first_not_of(" \t\r") != std::string::npos)
-          lines.emplace_back(number, text);
-      }
+    unsigned int number = 1;
+    for (std::size_t start = 0, i = 0; i <= content.size(); ++i)
+      if (i == content.size() || content[i] == '\n' || content[i] == '\r')
+        {
+          // '#' starts a comment; lines without data are skipped
+          const std::string line = content.substr(start, i - start);
+          const std::string text = line.substr(0, line.find('#'));
+          if (text.find_first_not_of(" \t") != std::string::npos)
+            lines.emplace_back(number, text);
+          if (i + 1 < content.size() && content[i] == '\r' &&
+              content[i + 1] == '\n')
+            ++i;
+          start = i + 1;
+          ++number;
+        }
     const auto error = [&](const unsigned int number, const std::string &what) {
       throw InputError("obstacle data file '" + path + "'" +
                        (number > 0 ? ", line " + std::to_string(number) : "") +

@@ -18,7 +18,9 @@ body on 8^2 -> 16^2 x 1 cells).
 - A grid over the left half [0, 5] x [0, 10] only (the plane z = -0.1
   there, -0.03 for the membrane): the plate rests on it at (2.5, 5) and
   sags below its level at (7.5, 5), where no obstacle is, in every
-  model."""
+  model.
+- The bilinear data file with Windows (CR LF) and old Mac (CR) line ends
+  gives the membrane's run on the file with LF line ends to the last bit."""
 import os, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from common import parse_args, run, check, close, finish
@@ -86,6 +88,18 @@ for model in MODELS:
     for j in range(4):
         close(b["probes"][j], a["probes"][j], 1e-8,
               "%s: bilinear, probe %d, data vs formula" % (model, j))
+
+# the same file with the line ends of other platforms
+lf = open(bilinear, newline="").read()
+reference = solve("membrane", "bilinear_data_lf", data(bilinear))
+for tag, end in [("crlf", "\r\n"), ("cr", "\r")]:
+    path = os.path.join(args.workdir, "bilinear_%s.txt" % tag)
+    with open(path, "w", newline="") as f:
+        f.write(lf.replace("\n", end))
+    c = solve("membrane", "bilinear_data_" + tag, data(path))
+    check(c["contact_force"] == reference["contact_force"] and c["probes"] == reference["probes"],
+          "membrane: the data file with %s line ends gives the run of LF line ends"
+          % tag.upper())
 
 # 2. the dome sampled on finer and finer grids
 dome = lambda x, y: -0.1 - 0.004 * ((x - 5) ** 2 + (y - 5) ** 2)
