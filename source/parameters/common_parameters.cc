@@ -179,10 +179,11 @@ namespace NitscheContact
                     "thousandth l of the plate's larger side: kappa = l^4/D "
                     "for the plates (3D: max(l^4/D, l/E)), l^2/T for the "
                     "membrane. Once the mesh resolves l the number of Newton "
-                    "iterations stops growing with the mesh; the solution "
-                    "moves by at most the penetration kappa p, which the log "
-                    "and summary.json give on every cycle (doc/formulations."
-                    "md, 'The obstacle compliance').");
+                    "iterations stops growing with the mesh. The log and "
+                    "summary.json give the largest penetration kappa p on "
+                    "every cycle, the size of the layer's effect on the "
+                    "deflections (doc/formulations.md, 'The obstacle "
+                    "compliance').");
       prm.leave_subsection();
     }
 

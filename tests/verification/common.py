@@ -27,9 +27,11 @@ _entry_paths = None
 
 
 def entry_subsections(entry, text):
-    """The subsections of `entry` in nitsche-contact's parameter listing; an
-    entry name found in several (e.g. 'Contact quadrature rule') is taken
-    from the subsection of the model that `text` sets."""
+    """The subsections of `entry` in nitsche-contact's parameter listing. An
+    entry name found only in the models' own subsections (e.g. 'Contact
+    quadrature rule') is taken from the subsection of the model that `text`
+    sets last; any other name found in several subsections (e.g. 'Type') is
+    an error: set it in the text itself."""
     global _entry_paths
     if _entry_paths is None:
         listing = subprocess.run([_exe, "--print-parameters"], check=True,
@@ -44,10 +46,11 @@ def entry_subsections(entry, text):
             elif line.startswith("set "):
                 _entry_paths.append(stack + [line[4:].split("=")[0].strip()])
     found = [p[:-1] for p in _entry_paths if p[-1] == entry]
-    if len(found) > 1:
-        m = re.search(r"(?m)^\s*set Model\s*=\s*(\w+)", text)
-        model = (m.group(1) if m else "elasticity").capitalize()
-        found = [p for p in found if p and p[0] == model]
+    models = ("Elasticity", "Kirchhoff", "Membrane", "Mindlin")
+    if len(found) > 1 and all(p and p[0] in models for p in found):
+        m = re.findall(r"(?m)^\s*set Model\s*=\s*(\w+)", text)
+        model = (m[-1] if m else "elasticity").capitalize()
+        found = [p for p in found if p[0] == model]
     if len(found) != 1:
         fail("entry '%s': %d subsections in the parameter listing" % (entry, len(found)))
     return found[0]
@@ -55,8 +58,8 @@ def entry_subsections(entry, text):
 
 def set_entries(text, entries, name):
     """Set each (entry, value) of entries in the parameter text: replace
-    its 'set' line, or, for an entry the text leaves at its default, append
-    it in its subsection. An entry set more than once fails a check named
+    its 'set' line (a name's line in any subsection), or, for an entry the
+    text leaves at its default, append it in its subsection. An entry set more than once fails a check named
     after `name`."""
     for entry, value in entries:
         text, n = re.subn(r"(?m)^(\s*set %s\s*=).*$" % re.escape(entry),
