@@ -26,6 +26,22 @@ _exe = None
 _entry_paths = None
 
 
+def parameter_entries(text):
+    """The (subsections + [entry], value) of each 'set' line of a parameter
+    text, in order ('#' starts a comment)."""
+    found, stack = [], []
+    for line in text.splitlines():
+        line = line.split("#")[0].strip()
+        if line.startswith("subsection "):
+            stack.append(line[len("subsection "):].strip())
+        elif line == "end":
+            stack.pop()
+        elif line.startswith("set ") and "=" in line:
+            entry, value = line[4:].split("=", 1)
+            found.append((stack + [entry.strip()], value.strip()))
+    return found
+
+
 def entry_subsections(entry, text):
     """The subsections of `entry` in nitsche-contact's parameter listing. An
     entry name found only in the models' own subsections (e.g. 'Contact
@@ -36,15 +52,7 @@ def entry_subsections(entry, text):
     if _entry_paths is None:
         listing = subprocess.run([_exe, "--print-parameters"], check=True,
                                  stdout=subprocess.PIPE, text=True).stdout
-        _entry_paths, stack = [], []
-        for line in listing.splitlines():
-            line = line.split("#")[0].strip()
-            if line.startswith("subsection "):
-                stack.append(line[len("subsection "):].strip())
-            elif line == "end":
-                stack.pop()
-            elif line.startswith("set "):
-                _entry_paths.append(stack + [line[4:].split("=")[0].strip()])
+        _entry_paths = [path for path, _ in parameter_entries(listing)]
     found = [p[:-1] for p in _entry_paths if p[-1] == entry]
     models = ("Elasticity", "Kirchhoff", "Membrane", "Mindlin")
     if len(found) > 1 and all(p and p[0] in models for p in found):

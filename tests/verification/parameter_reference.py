@@ -9,7 +9,7 @@ entries whose value differs from the default ('Model' apart, which names
 the file's model), so that a change of a default reaches them."""
 import glob, os, re, subprocess, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import parse_args, check, finish
+from common import parse_args, check, finish, parameter_entries
 
 args = parse_args()
 root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
@@ -26,18 +26,7 @@ with open(os.path.join(root, "doc", "parameters.md")) as f:
 
 def entries(text):
     """{subsection path/entry: value} of a parameter text."""
-    found, stack = {}, []
-    for line in text.splitlines():
-        line = line.split("#")[0].strip()
-        if line.startswith("subsection "):
-            stack.append(line[len("subsection "):].strip())
-        elif line == "end":
-            stack.pop()
-        else:
-            m = re.match(r"set\s+(.*?)\s*=\s*(.*)$", line)
-            if m:
-                found["/".join(stack + [m.group(1)])] = m.group(2).strip()
-    return found
+    return {"/".join(path): value for path, value in parameter_entries(text)}
 
 
 def same_value(a, b):
