@@ -417,6 +417,17 @@ main(int argc, char *argv[])
   dealii::Utilities::MPI::MPI_InitFinalize mpi(
     argc, argv, dealii::numbers::invalid_unsigned_int);
   const bool root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  try
+    {
+      NitscheContact::ModelRegistry::check();
+    }
+  catch (const std::exception &e)
+    {
+      if (root)
+        std::cerr << "nitsche-contact: internal error: " << e.what()
+                  << std::endl;
+      return internal_error;
+    }
 
   dealii::ParameterHandler prm;
   NitscheContact::CommonParameters::declare(prm);

@@ -5,19 +5,22 @@
 // finite element space, its linear algebra and its current iterate U. One
 // nonlinear iteration is
 //
-//   counts = model.assemble(scheme, true);     // R(U), K(U), contact status
-//   model.solve_linear();                      // K dU = -R
-//   model.apply_increment(1.);                 // U <- U_base + 1 dU
+//   e = model.assemble_newton_system(scheme, ...); // R(U), K(U), status
+//   s = model.solve_linear();                      // K dU = -R
+//   model.apply_increment(1.);                     // U <- U_base + 1 dU
 //
-// and a line search calls apply_increment(t) and assemble(scheme, false)
-// with other step lengths t (apply_increment always starts from the iterate
-// U_base at which solve_linear() was called).
+// and a line search calls apply_increment(t) and evaluate_residual(scheme,
+// ...) with other step lengths t (apply_increment always starts from the
+// iterate U_base at which solve_linear() was called). Each call returns what
+// it computed (the status counts, the energy J and its slope at U), so no
+// result depends on which call came before.
 //
-// ContactModel is the core every model implements. What only some models
-// can do is a small interface of its own below (an energy for the line
-// search, an estimate of the linear solve's error, a predictor, friction
-// continuation, ...); a model derives from the ones it offers, and the
-// driver asks for them with model_ability<...>(model).
+// ContactModel is the core every model implements (ModelBase,
+// models/common/model_base.h, owns the state every model shares). What only
+// some models can do is a small interface of its own below (a line slope
+// without assembling, the size of the load, a predictor, friction
+// continuation); a model derives from the ones it offers, and the driver
+// asks for them with model_ability<...>(model).
 #ifndef nitsche_contact_model_h
 #define nitsche_contact_model_h
 
@@ -27,6 +30,7 @@
 #include <nitsche_contact/nitsche_kernel.h>
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -59,6 +63,32 @@ namespace NitscheContact
     double solution  = 0.;
   };
 
+  /// The nonlinear problem evaluated at the current iterate U by
+  /// evaluate_residual() or assemble_newton_system().
+  struct Evaluation
+  {
+    ContactCounts counts;
+    /// R(U).dU with the current increment dU: the slope of J(U_base + t dU)
+    /// at this iterate; NaN without an energy.
+    double slope = std::numeric_limits<double>::quiet_NaN();
+    /// The state of the model it was taken at (iterate, load factor,
+    /// friction scale, mesh), and what ContactModel::energy() needs of it.
+    std::uint64_t   state          = 0;
+    NonlinearScheme scheme         = NonlinearScheme::newton;
+    double          contact_energy = std::numeric_limits<double>::quiet_NaN();
+  };
+
+  /// What solve_linear() did.
+  struct LinearSolve
+  {
+    /// Krylov iterations (0 after a new direct factorisation)
+    unsigned int iterations = 0;
+    /// R(U_base).dU with the residual of the system just solved and its
+    /// solution dU: the slope of J at U_base along dU; NaN without an
+    /// energy.
+    double slope = std::numeric_limits<double>::quiet_NaN();
+  };
+
   class ContactModel
   {
   public:
@@ -77,21 +107,35 @@ namespace NitscheContact
     problem_size() const = 0;
 
     /// Scale the applied load (body force, tractions, transverse load) by
-    /// `factor` for the following assemble() calls (load steps). Obstacles
+    /// `factor` in the following evaluations (load steps). Obstacles
     /// and boundary data are not scaled.
     virtual void
     set_load_factor(double factor) = 0;
 
-    /// Evaluate the contact status, the residual and, if with_matrix, the
-    /// linear system of the chosen scheme at the current iterate. With
-    /// with_matrix the status becomes the reference for n_changed of the
-    /// next call.
-    virtual ContactCounts
-    assemble(NonlinearScheme scheme, bool with_matrix) = 0;
+    /// The contact status and the residual R(U) of the chosen scheme at the
+    /// current iterate. n_changed counts against the status of the last
+    /// assemble_newton_system().
+    virtual Evaluation
+    evaluate_residual(NonlinearScheme scheme) = 0;
 
-    /// Solve the assembled system for the increment dU; returns the number
-    /// of Krylov iterations (0 after a new direct factorisation).
-    virtual unsigned int
+    /// As evaluate_residual(), and the Newton matrix K(U) of the scheme;
+    /// the status becomes the reference of n_changed. `at_this_iterate`
+    /// may be an evaluate_residual() of the current state, whose residual
+    /// and status a model may then reuse (nullptr: none; an evaluation of
+    /// another state is ignored).
+    virtual Evaluation
+    assemble_newton_system(NonlinearScheme   scheme,
+                           const Evaluation *at_this_iterate) = 0;
+
+    /// J(U) (when has_energy()) at the state of `evaluation`, which must be
+    /// the current one (std::logic_error otherwise): from element
+    /// integrals, not U.AU, which loses digits on badly conditioned
+    /// problems.
+    virtual double
+    energy(const Evaluation &evaluation) const = 0;
+
+    /// Solve the Newton system assembled last for the increment dU.
+    virtual LinearSolve
     solve_linear() = 0;
 
     /// U = U_base + step * dU.
@@ -102,6 +146,42 @@ namespace NitscheContact
     /// increment dU and of the current iterate U.
     virtual EnergyNorms
     energy_norms() const = 0;
+
+    /// Whether the formulation in use is the gradient of a convex potential
+    /// energy J (theta = 1 without friction): the line search then
+    /// minimises J along the Newton direction. It depends on theta and on
+    /// the friction coefficient of the current stage.
+    virtual bool
+    has_energy() const = 0;
+
+    /// Whether the algebraic error of the last Newton correction in the
+    /// energy norm is a small fraction of the correction itself (direct
+    /// solves; Krylov solves on the true residual with a tight tolerance);
+    /// the driver's active-set stop relies on it.
+    virtual bool
+    last_solve_accurate() const = 0;
+
+    /// An upper estimate of the energy norm of the next Newton correction
+    /// at the iterate of the last assemble_newton_system(), with the Newton
+    /// matrix of the last solve, computed without a solve; none when the
+    /// linear solver in use cannot estimate it.
+    virtual std::optional<double>
+    estimated_correction() const
+    {
+      return std::nullopt;
+    }
+
+    /// The work F.U of the load (without contact terms, at the current
+    /// load factor) on the current iterate: with it the driver recognises
+    /// a rigid motion (a free plate resting on the obstacle), which the
+    /// energy seminorm cannot judge.
+    virtual double
+    load_work() const = 0;
+
+    /// |dU| / |U| in the Euclidean norm of the coefficient vectors (the
+    /// measure of corrections of a rigid solution).
+    virtual double
+    increment_l2_relative() const = 0;
 
     /// Contact area and force, extreme deflections, probe values, errors.
     virtual CycleResults
@@ -137,30 +217,6 @@ namespace NitscheContact
   // ---------------------------------------------------------------------
   // Optional abilities.
 
-  /// A model whose formulation can be the gradient of a convex potential
-  /// energy J (theta = 1 without friction): the line search then minimises
-  /// J along the Newton direction.
-  class PotentialEnergy
-  {
-  public:
-    virtual ~PotentialEnergy() = default;
-
-    /// Whether the formulation in use is the gradient of J (it depends on
-    /// theta and on the friction coefficient of the current stage).
-    virtual bool
-    has_energy() const = 0;
-
-    /// J at the current iterate, from element integrals (not U.AU, which
-    /// loses digits on badly conditioned problems). Only when has_energy().
-    virtual double
-    energy() const = 0;
-
-    /// d/dt J(U_base + t dU) at the current iterate: R(U).dU with the
-    /// residual of the last assemble(). Only when has_energy().
-    virtual double
-    energy_slope() const = 0;
-  };
-
   /// A model that evaluates phi'(t) = R(U_base + t dU).dU for any t in
   /// [0, 1] without assembling (every point quantity is affine in t).
   class FastLineSlope
@@ -173,48 +229,10 @@ namespace NitscheContact
     virtual void
     prepare_line_slope() = 0;
 
-    /// phi'(t); equals energy_slope() after apply_increment(t) and
-    /// assemble() up to round-off.
+    /// phi'(t); equals the slope of evaluate_residual() after
+    /// apply_increment(t) up to round-off.
     virtual double
     line_slope(double t) const = 0;
-  };
-
-  /// A model that knows how accurate its last linear solve was; the
-  /// driver's active-set stop relies on it.
-  class SolveAccuracy
-  {
-  public:
-    virtual ~SolveAccuracy() = default;
-
-    /// Whether the algebraic error of the last Newton correction in the
-    /// energy norm is a small fraction of the correction itself (direct
-    /// solves; Krylov solves on the true residual with a tight tolerance).
-    virtual bool
-    last_solve_accurate() const = 0;
-
-    /// An upper estimate of the energy norm of the next Newton correction
-    /// at the current iterate (the residual of the last assemble()) with
-    /// the Newton matrix of the last solve, computed without a solve; none
-    /// when the linear solver in use cannot estimate it.
-    virtual std::optional<double>
-    estimated_correction() const = 0;
-  };
-
-  /// A model whose solution can be a rigid motion (a free plate resting on
-  /// the obstacle), which the energy seminorm cannot judge.
-  class RigidMotionScale
-  {
-  public:
-    virtual ~RigidMotionScale() = default;
-
-    /// The work F.U of the load (without contact terms, at the current
-    /// load factor) on the current iterate.
-    virtual double
-    load_work() const = 0;
-
-    /// |dU| / |U| in the Euclidean norm of the coefficient vectors.
-    virtual double
-    increment_l2_relative() const = 0;
   };
 
   /// A model that knows the size of its load vector, the scale of the
@@ -239,7 +257,7 @@ namespace NitscheContact
     virtual ~FrictionContinuation() = default;
 
     /// Use F = scale * 'Contact/Friction coefficient' in the following
-    /// assemble() calls; scale = 0 is the frictionless formulation.
+    /// evaluations; scale = 0 is the frictionless formulation.
     virtual void
     set_friction_scale(double scale) = 0;
   };
@@ -293,7 +311,7 @@ namespace NitscheContact
   }
 
   /// |d| / |u| in the Euclidean norm of the vectors, NaN for u = 0 (for
-  /// RigidMotionScale::increment_l2_relative()).
+  /// ContactModel::increment_l2_relative()).
   template <class VectorType>
   inline double
   relative_l2(const VectorType &d, const VectorType &u)

@@ -36,10 +36,19 @@ namespace NitscheContact
       CreateFunction  create;
     };
 
+    /// The model of a parameter file that does not set 'Model'.
+    inline constexpr const char *default_model = "elasticity";
+
     /// Add a model (at static initialisation, by the macro below); returns
-    /// true so that the macro can keep the result in a constant.
+    /// true so that the macro can keep the result in a constant. A second
+    /// model of the same name is kept aside for check().
     bool
     add(const Entry &entry);
+
+    /// std::logic_error naming the model unless every name is registered
+    /// once and the default model is among them; main() calls it first.
+    void
+    check();
 
     /// The registered models, sorted by name.
     std::vector<Entry>

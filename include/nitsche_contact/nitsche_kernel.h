@@ -60,13 +60,6 @@ namespace NitscheContact
     return x < 0. ? x : 0.;
   }
 
-  /// [x]_+ = max(x, 0).
-  inline double
-  positive_part(const double x)
-  {
-    return x > 0. ? x : 0.;
-  }
-
   /// Projection of the tangential vector q onto the ball of radius tau >= 0.
   inline Tensor<1, 3>
   project_on_ball(const Tensor<1, 3> &q, const double tau)

@@ -99,15 +99,6 @@ namespace NitscheContact
     /// (each model then calls obstacle_compliance_for() with its body's
     /// compliance at regularisation_length())
     std::optional<double> obstacle_compliance;
-    /// theta = 1 without friction: the Nitsche terms are the gradient of
-    /// a contact energy, so the Newton matrix is symmetric (the Hessian of
-    /// the total energy) and the driver's line search can use the energy
-    bool
-    has_energy() const
-    {
-      return theta == 1. && friction == 0.;
-    }
-
     // "Nonlinear solver"
     NonlinearSettings nonlinear;
     bool            allow_non_convergence  = false;

@@ -144,7 +144,7 @@ namespace NitscheContact
     rec.results.contact_area = rec.results.contact_force =
       rec.results.min_deflection = rec.results.max_deflection =
         std::numeric_limits<double>::quiet_NaN();
-    Timer timer;
+    TimerOutput::Scope setup(*rec.timer, Phase::setup);
     // the first stage's data before the setup, which builds the constant
     // parts with them
     model.set_load_factor(first.load_factor);
@@ -182,7 +182,7 @@ namespace NitscheContact
                          std::to_string(cycle) +
                          "; summary.json holds the cycles before it]");
       }
-    rec.times.setup          = timer.wall_time();
+    setup.stop();
     const ProblemSize size   = model.problem_size();
     rec.n_dofs               = size.n_dofs;
     rec.h                    = size.cell_size;
@@ -221,7 +221,7 @@ namespace NitscheContact
         NonlinearResult result;
         try
           {
-            result = solver.solve(model, stage, rec.times);
+            result = solver.solve(model, stage, *rec.timer);
           }
         catch (const ConvergenceFailure &e)
           {
@@ -283,8 +283,8 @@ namespace NitscheContact
   void
   ContactDriver::finish_cycle(ContactModel &model, const unsigned int cycle)
   {
-    CycleRecord &rec = records.back();
-    Timer        timer;
+    CycleRecord       &rec = records.back();
+    TimerOutput::Scope postprocess(*rec.timer, Phase::postprocess);
     try
       {
         rec.results = model.postprocess(prm.probes);
@@ -297,15 +297,15 @@ namespace NitscheContact
         write_summary(model);
         throw;
       }
-    rec.times.postprocess = timer.wall_time();
+    postprocess.stop();
 
-    timer.restart();
+    TimerOutput::Scope output(*rec.timer, Phase::output);
     if (prm.output_format != "none")
       write_graphical_output(model, cycle);
     write_profile(model, cycle);
     if (prm.contact_points)
       write_contact_points(model, cycle);
-    rec.times.output = timer.wall_time();
+    output.stop();
     print_cycle_results();
   }
 
@@ -337,12 +337,13 @@ namespace NitscheContact
         stage.cycle        = k;
         stage.frictional   = false; // the frictionless plate
         stage.nested_start = k > 0;
-        PhaseTimes      times;
+        // (its phases are part of this cycle's setup)
+        const auto      times = make_phase_timer();
         NonlinearResult result;
         pcout.set_condition(false);
         try
           {
-            result = solver.solve(predictor, stage, times);
+            result = solver.solve(predictor, stage, *times);
           }
         catch (...)
           {

@@ -43,6 +43,26 @@ namespace NitscheContact
       return out + "\"";
     }
 
+    /// The rate log2(e_{i-1} / e_i) of each error of records[i] against the
+    /// previous cycle (as the convergence table's reduction_rate_log2),
+    /// NaN where either error is missing or not positive.
+    template <class Records>
+    std::vector<std::pair<std::string, double>>
+    error_rates(const Records &records, const std::size_t i)
+    {
+      std::vector<std::pair<std::string, double>> rates;
+      for (const auto &e : records[i].results.errors)
+        {
+          double rate = std::numeric_limits<double>::quiet_NaN();
+          if (i > 0)
+            for (const auto &previous : records[i - 1].results.errors)
+              if (previous.first == e.first && e.second > 0 &&
+                  previous.second > 0)
+                rate = std::log2(previous.second / e.second);
+          rates.emplace_back(e.first, rate);
+        }
+      return rates;
+    }
   } // namespace
 
   void
@@ -94,12 +114,14 @@ namespace NitscheContact
           << "cycle      dofs   setup  assembly    solve  postproc  "
              "output\n";
     for (const auto &r : records)
-      pcout << std::setw(5) << r.cycle << std::setw(10) << r.n_dofs
-            << std::fixed << std::setprecision(3) << std::setw(8)
-            << r.times.setup << std::setw(10) << r.times.assembly
-            << std::setw(9) << r.times.solve << std::setw(10)
-            << r.times.postprocess << std::setw(8) << r.times.output
-            << std::endl;
+      {
+        const PhaseTimes t = phase_times(*r.timer);
+        pcout << std::setw(5) << r.cycle << std::setw(10) << r.n_dofs
+              << std::fixed << std::setprecision(3) << std::setw(8) << t.setup
+              << std::setw(10) << t.assembly << std::setw(9) << t.solve
+              << std::setw(10) << t.postprocess << std::setw(8) << t.output
+              << std::endl;
+      }
   }
 
   void
@@ -274,19 +296,20 @@ namespace NitscheContact
             << ',' << r.results.max_deflection;
         for (const double p : r.results.probes)
           csv << ',' << p;
+        const auto rates = error_rates(records, i);
         for (const auto &name : error_names)
           {
-            double e = std::numeric_limits<double>::quiet_NaN(), prev = e;
-            for (const auto &x : r.results.errors)
-              if (x.first == name)
-                e = x.second;
-            if (i > 0)
-              for (const auto &x : records[i - 1].results.errors)
-                if (x.first == name)
-                  prev = x.second;
+            double e = std::numeric_limits<double>::quiet_NaN();
+            double rate = e;
+            for (unsigned int k = 0; k < rates.size(); ++k)
+              if (rates[k].first == name)
+                {
+                  e    = r.results.errors[k].second;
+                  rate = rates[k].second;
+                }
             csv << ',' << e << ',';
-            if (i > 0 && prev > 0 && e > 0)
-              csv << std::log2(prev / e);
+            if (std::isfinite(rate))
+              csv << rate;
           }
         csv << '\n';
       }
@@ -359,25 +382,23 @@ namespace NitscheContact
             << ": " << json_number(r.results.errors[e].second);
         f << "},\n      \"rates\": {";
         bool first = true;
-        if (i > 0)
-          for (const auto &e : r.results.errors)
-            for (const auto &ep : records[i - 1].results.errors)
-              if (ep.first == e.first && e.second > 0 && ep.second > 0)
-                {
-                  f << (first ? "" : ", ") << json_string(e.first) << ": "
-                    << json_number(std::log2(ep.second / e.second));
-                  first = false;
-                }
+        for (const auto &rate : error_rates(records, i))
+          if (std::isfinite(rate.second))
+            {
+              f << (first ? "" : ", ") << json_string(rate.first) << ": "
+                << json_number(rate.second);
+              first = false;
+            }
         f << "},\n      \"extra\": {";
         for (unsigned int e = 0; e < r.results.extra.size(); ++e)
           f << (e ? ", " : "") << json_string(r.results.extra[e].first)
             << ": " << json_number(r.results.extra[e].second);
+        const PhaseTimes t = phase_times(*r.timer);
         f << "},\n      \"wall_times\": {\"setup\": "
-          << json_number(r.times.setup)
-          << ", \"assembly\": " << json_number(r.times.assembly)
-          << ", \"solve\": " << json_number(r.times.solve)
-          << ", \"postprocess\": " << json_number(r.times.postprocess)
-          << ", \"output\": " << json_number(r.times.output) << "}\n    }"
+          << json_number(t.setup) << ", \"assembly\": "
+          << json_number(t.assembly) << ", \"solve\": " << json_number(t.solve)
+          << ", \"postprocess\": " << json_number(t.postprocess)
+          << ", \"output\": " << json_number(t.output) << "}\n    }"
           << (i + 1 < records.size() ? "," : "") << "\n";
       }
     f << "  ]\n}\n";

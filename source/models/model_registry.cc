@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <stdexcept>
 
 namespace NitscheContact
 {
@@ -16,13 +17,35 @@ namespace NitscheContact
         static std::map<std::string, Entry> models;
         return models;
       }
+
+      /// names registered more than once
+      std::vector<std::string> &
+      duplicates()
+      {
+        static std::vector<std::string> names;
+        return names;
+      }
     } // namespace
 
     bool
     add(const Entry &entry)
     {
-      registry()[entry.name] = entry;
+      if (!registry().emplace(entry.name, entry).second)
+        duplicates().push_back(entry.name);
       return true;
+    }
+
+    void
+    check()
+    {
+      if (!duplicates().empty())
+        throw std::logic_error("two models are registered with the name '" +
+                               duplicates().front() +
+                               "'; each NITSCHE_CONTACT_REGISTER_MODEL needs "
+                               "a name of its own");
+      if (registry().count(default_model) == 0)
+        throw std::logic_error(std::string("the default model '") +
+                               default_model + "' is not registered");
     }
 
     std::vector<Entry>

@@ -62,7 +62,8 @@ namespace NitscheContact
   {}
 
   void
-  NonmonotoneWindow::record_iterate(ModelView &model)
+  NonmonotoneWindow::record_iterate(ModelView        &model,
+                                    const Evaluation &at_iterate)
   {
     if (!enabled)
       return;
@@ -70,9 +71,7 @@ namespace NitscheContact
       bounds.push_back(next_bound);
     else
       {
-        // J at the iterate: energy() uses the contact part of the
-        // assemble() just done there
-        const double j = model.energy();
+        const double j = model.energy(at_iterate);
         if (std::isfinite(j))
           bounds.push_back(j);
         else
@@ -106,13 +105,13 @@ namespace NitscheContact
               const NonlinearSettings &settings,
               const double             relative_correction,
               const double             residual_norm,
+              const double             slope,
               const bool               damping,
               NonmonotoneWindow       &window)
   {
     if (relative_correction <= settings.tolerance || !settings.line_search)
       return StepChoice();
-    const bool   has_energy = model.has_energy();
-    const double slope      = model.energy_slope(); // at U_base along dU
+    const bool has_energy = model.has_energy();
     if (has_energy && slope < 0.)
       return exact_line_search(
         model, slope, settings.fast_line_search, damping, window);
@@ -136,8 +135,8 @@ namespace NitscheContact
   {
     StepChoice choice;
     model.step_to(1.);
-    model.assemble(false);
-    const double slope_at_full = model.energy_slope();
+    const Evaluation at_full       = model.evaluate();
+    const double     slope_at_full = at_full.slope;
     const double j_base        = window.current();
     window.set_next_bound(j_base + slope_at_full);
     // Full step when phi'(1) is already small: always once the status has
@@ -148,7 +147,7 @@ namespace NitscheContact
     // (full steps A -> B -> A could pass it for ever).
     if (window.active() && !damping)
       {
-        const double j_full = model.energy();
+        const double j_full = model.energy(at_full);
         if (window.accepts(j_full, slope_at_start))
           {
             window.set_next_bound(j_full);
@@ -171,8 +170,7 @@ namespace NitscheContact
         else
           {
             model.step_to(t);
-            model.assemble(false);
-            slope_t = model.energy_slope();
+            slope_t = model.evaluate().slope;
           }
         window.set_next_bound(j_base + t * slope_t);
         if (std::abs(slope_t) <= line_search_slope_ratio *
@@ -197,18 +195,20 @@ namespace NitscheContact
                     const bool   use_energy,
                     const double residual_norm)
   {
-    // J(U_base): energy() uses the contact part of the last assemble(),
-    // which was at U_base
+    double start = residual_norm;
     if (use_energy)
-      model.step_to(0.);
-    const double start = use_energy ? model.energy() : residual_norm;
+      {
+        model.step_to(0.);
+        start = model.energy(model.evaluate());
+      }
     double       best_step = 1., best_merit = 0.;
     double       t = 1.;
     for (; t >= smallest_backtracking_step; t *= 0.5)
       {
         model.step_to(t);
-        const ContactCounts trial = model.assemble(false);
-        const double merit = use_energy ? model.energy() : trial.residual_norm;
+        const Evaluation trial = model.evaluate();
+        const double     merit =
+          use_energy ? model.energy(trial) : trial.counts.residual_norm;
         if (t == 1. || merit < best_merit)
           {
             best_step  = t;

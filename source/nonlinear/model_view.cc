@@ -6,50 +6,40 @@
 
 namespace NitscheContact
 {
-  namespace
-  {
-    /// Adds the wall time from construction to destruction to `seconds`.
-    class PhaseTimer
-    {
-    public:
-      explicit PhaseTimer(double &seconds)
-        : seconds(seconds)
-      {}
-      ~PhaseTimer()
-      {
-        seconds += timer.wall_time();
-      }
-
-    private:
-      double       &seconds;
-      dealii::Timer timer;
-    };
-  } // namespace
+  using dealii::TimerOutput;
 
   ModelView::ModelView(ContactModel         &model,
                        const NonlinearScheme scheme,
-                       PhaseTimes           &times)
+                       TimerOutput          &timer)
     : base(model)
     , scheme(scheme)
-    , times(times)
-    , potential(model_ability<PotentialEnergy>(model))
+    , timer(timer)
     , fast_slope(model_ability<FastLineSlope>(model))
-    , accuracy(model_ability<SolveAccuracy>(model))
-    , rigid(model_ability<RigidMotionScale>(model))
     , residual_scale(model_ability<ResidualScale>(model))
   {}
 
-  ContactCounts
-  ModelView::assemble(const bool with_matrix)
+  Evaluation
+  ModelView::assemble()
   {
-    PhaseTimer t(times.assembly);
-    return base.assemble(scheme, with_matrix);
+    TimerOutput::Scope t(timer, Phase::assembly);
+    const Evaluation e = base.assemble_newton_system(
+      scheme, last_residual ? &*last_residual : nullptr);
+    last_residual.reset();
+    return e;
   }
 
-  unsigned int
+  Evaluation
+  ModelView::evaluate()
+  {
+    TimerOutput::Scope t(timer, Phase::assembly);
+    last_residual = base.evaluate_residual(scheme);
+    return *last_residual;
+  }
+
+  LinearSolve
   ModelView::solve()
   {
-    PhaseTimer t(times.solve);
+    TimerOutput::Scope t(timer, Phase::solve);
     return base.solve_linear();
   }
 
@@ -68,24 +58,16 @@ namespace NitscheContact
   bool
   ModelView::has_energy() const
   {
-    return potential != nullptr && potential->has_energy();
+    return base.has_energy();
   }
 
   double
-  ModelView::energy()
+  ModelView::energy(const Evaluation &evaluation)
   {
     if (!has_energy())
       return std::numeric_limits<double>::quiet_NaN();
-    PhaseTimer t(times.assembly);
-    return potential->energy();
-  }
-
-  double
-  ModelView::energy_slope()
-  {
-    if (!has_energy())
-      return std::numeric_limits<double>::quiet_NaN();
-    return potential->energy_slope();
+    TimerOutput::Scope t(timer, Phase::assembly);
+    return base.energy(evaluation);
   }
 
   bool
@@ -93,7 +75,7 @@ namespace NitscheContact
   {
     if (fast_slope == nullptr || !has_energy())
       return false;
-    PhaseTimer t(times.assembly);
+    TimerOutput::Scope t(timer, Phase::assembly);
     fast_slope->prepare_line_slope();
     return true;
   }
@@ -101,32 +83,28 @@ namespace NitscheContact
   double
   ModelView::line_slope(const double t)
   {
-    PhaseTimer timer(times.assembly);
+    TimerOutput::Scope scope(timer, Phase::assembly);
     return fast_slope->line_slope(t);
   }
 
   bool
   ModelView::last_solve_accurate() const
   {
-    return accuracy != nullptr && accuracy->last_solve_accurate();
+    return base.last_solve_accurate();
   }
 
   std::optional<double>
   ModelView::estimated_correction()
   {
-    if (accuracy == nullptr)
-      return std::nullopt;
-    PhaseTimer t(times.solve);
-    return accuracy->estimated_correction();
+    TimerOutput::Scope t(timer, Phase::solve);
+    return base.estimated_correction();
   }
 
   bool
   ModelView::is_rigid_motion(const double solution_energy_norm) const
   {
-    if (rigid == nullptr)
-      return false;
     // (load_work() is global: every rank takes the same branch)
-    const double work = rigid->load_work();
+    const double work = base.load_work();
     return std::isfinite(work) && solution_energy_norm * solution_energy_norm <=
                                     rigid_motion_energy_ratio * std::abs(work);
   }
@@ -134,8 +112,7 @@ namespace NitscheContact
   double
   ModelView::increment_l2_relative() const
   {
-    return rigid != nullptr ? rigid->increment_l2_relative() :
-                              std::numeric_limits<double>::quiet_NaN();
+    return base.increment_l2_relative();
   }
 
   std::optional<double>

@@ -48,11 +48,11 @@ namespace NitscheContact
   {}
 
   NonlinearResult
-  NonlinearSolver::solve(ContactModel     &contact_model,
-                         const SolveStage &stage,
-                         PhaseTimes       &times)
+  NonlinearSolver::solve(ContactModel        &contact_model,
+                         const SolveStage    &stage,
+                         dealii::TimerOutput &timer)
   {
-    ModelView         model(contact_model, settings.scheme, times);
+    ModelView         model(contact_model, settings.scheme, timer);
     DampingSwitch     damping(settings);
     NonmonotoneWindow window(settings.nonmonotone_window,
                              settings.line_search && stage.nested_start);
@@ -67,10 +67,11 @@ namespace NitscheContact
     for (unsigned int &k = result.iterations;;)
       {
         // R(U_k), the Newton matrix and the contact status at U_k
-        const ContactCounts counts = model.assemble(true);
-        result.counts              = counts;
+        const Evaluation    at_iterate = model.assemble();
+        const ContactCounts counts     = at_iterate.counts;
+        result.counts                  = counts;
         require_finite_residual(counts, k, stage.cycle);
-        window.record_iterate(model);
+        window.record_iterate(model, at_iterate);
 
         // the stopping rules that need no solve (a cycle that converges
         // after N solves takes N iterations, not N + 1)
@@ -93,7 +94,8 @@ namespace NitscheContact
         // the Newton correction dU
         if (stage.before_solve)
           stage.before_solve(k);
-        const unsigned int linear_iterations = model.solve();
+        const LinearSolve  linear            = model.solve();
+        const unsigned int linear_iterations = linear.iterations;
         result.linear_iterations += linear_iterations;
         ++k;
         model.step_to(1.);
@@ -105,6 +107,7 @@ namespace NitscheContact
                                             settings,
                                             correction.relative,
                                             counts.residual_norm,
+                                            linear.slope,
                                             damping.on(),
                                             window);
         say(iteration_line(k, counts, stage.friction_in_run, correction,
@@ -126,7 +129,7 @@ namespace NitscheContact
         if (stop || !result.failure.empty())
           {
             // the status and residual at the final iterate
-            result.counts    = model.assemble(false);
+            result.counts    = model.evaluate().counts;
             result.converged = stop.has_value();
             if (stop)
               say(*stop);

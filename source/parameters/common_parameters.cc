@@ -329,10 +329,9 @@ namespace NitscheContact
     std::string models;
     for (const ModelRegistry::Entry &m : ModelRegistry::entries())
       models += (models.empty() ? "" : "; ") + m.name + ": " + m.description;
-    // (the default: the first model in alphabetical order)
     declare_entry(prm,
                   "Model",
-                  ModelRegistry::entries().front().name,
+                  ModelRegistry::default_model,
                   Patterns::Selection(ModelRegistry::selection_pattern()),
                   "The model that solves the problem (" + models + ").");
     declare_geometry(prm);

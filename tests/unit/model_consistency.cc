@@ -1,7 +1,7 @@
 // Finite-difference consistency checks of the four models on small
 // meshes, at an iterate with contact (after a few full Newton steps from
 // U = 0), for every contact formulation and Nitsche variant:
-//  1. the generalized Jacobian K of assemble(newton, true) against central
+//  1. the generalized Jacobian K of assemble_newton_system() against central
 //     differences of the residual, K d = (R(U + e d) - R(U - e d)) / (2e),
 //     for random directions d (relative error <= 1e-6 for the best of the
 //     steps e = 1e-6, 1e-7, 1e-8 |U|/|d|; the residual is piecewise smooth
@@ -12,10 +12,10 @@
 //     points whose slip reversed by those of the stick branch);
 //     (checks 1 and 2 cannot see a wrong term that is consistently wrong
 //     in R and K; checks 3 and 4 below compare with closed forms);
-//  2. where energy() is defined (theta = 1 frictionless, and the pure
+//  2. where the energy J is defined (theta = 1 frictionless, and the pure
 //     penalty), dJ/dt along d equals R.d: (J(U + s d) - J(U - s d)) / (2s)
 //     against R(U).d (relative 1e-6), for d random and d = the Newton
-//     increment; elsewhere energy() must be NaN.
+//     increment; elsewhere ContactModel::energy() must be NaN.
 // The numbers are computed from the program's own residual, so the check is
 // independent of any reference solution: it tests that K and J are the
 // derivative and the potential of R.
@@ -168,15 +168,18 @@ namespace
     ContactCounts c;
     for (unsigned int k = 0; k < n_steps; ++k)
       {
-        c = model.assemble(NonlinearScheme::newton, true);
+        c = model.assemble_newton_system(NonlinearScheme::newton, nullptr)
+              .counts;
         model.solve_linear();
         model.apply_increment(1.);
       }
     using VectorType         = VectorOf<Model>;
     const VectorType U0      = model.iterate();
-    c                        = model.assemble(NonlinearScheme::newton, true);
-    const VectorType mR0     = model.negative_residual();
-    const double         J0  = model.energy();
+    const Evaluation at_U0 =
+      model.assemble_newton_system(NonlinearScheme::newton, nullptr);
+    c                    = at_U0.counts;
+    const VectorType mR0 = model.negative_residual();
+    const double     J0  = model.energy(at_U0);
 
     std::mt19937 gen(7);
     double       jac_err = 0.;
@@ -197,11 +200,11 @@ namespace
             const double e = rel * U0.linfty_norm() / d.linfty_norm();
             model.iterate() = U0;
             model.iterate().add(e, d);
-            model.assemble(NonlinearScheme::newton, false);
+            model.evaluate_residual(NonlinearScheme::newton);
             fd = model.negative_residual();
             model.iterate() = U0;
             model.iterate().add(-e, d);
-            model.assemble(NonlinearScheme::newton, false);
+            model.evaluate_residual(NonlinearScheme::newton);
             fd.add(-1., model.negative_residual());
             fd *= -1. / (2. * e); // residual R = -(negative residual)
             fd.add(-1., Kd);
@@ -227,7 +230,7 @@ namespace
       }
     // directions: two random ones and the Newton increment
     model.iterate() = U0;
-    model.assemble(NonlinearScheme::newton, true);
+    model.assemble_newton_system(NonlinearScheme::newton, nullptr);
     model.solve_linear();
     model.apply_increment(1.);
     VectorType newton = model.iterate();
@@ -253,8 +256,8 @@ namespace
               {
                 model.iterate() = U0;
                 model.iterate().add(side == 0 ? s : -s, d);
-                model.assemble(NonlinearScheme::newton, false);
-                Jpm[side] = model.energy();
+                Jpm[side] = model.energy(
+                  model.evaluate_residual(NonlinearScheme::newton));
               }
             const double dJ = (Jpm[0] - Jpm[1]) / (2. * s);
             best = std::min(best, std::abs(dJ - Rd) / std::abs(Rd));
@@ -271,15 +274,15 @@ namespace
     if constexpr (std::is_base_of_v<FastLineSlope, Model>)
       {
         model.iterate() = U0;
-        model.assemble(NonlinearScheme::newton, true);
+        model.assemble_newton_system(NonlinearScheme::newton, nullptr);
         model.solve_linear();
         model.prepare_line_slope();
         double slope_err = 0.;
         for (const double t : {0.25, 0.5, 1.})
           {
             model.apply_increment(t);
-            model.assemble(NonlinearScheme::newton, false);
-            const double assembled = model.energy_slope();
+            const double assembled =
+              model.evaluate_residual(NonlinearScheme::newton).slope;
             slope_err = std::max(slope_err,
                                  std::abs(model.line_slope(t) - assembled) /
                                    std::max(std::abs(assembled), 1e-300));
@@ -444,7 +447,7 @@ namespace
                                    UniformStressState(c),
                                    model.iterate());
           const ContactCounts counts =
-            model.assemble(NonlinearScheme::newton, false);
+            model.evaluate_residual(NonlinearScheme::newton).counts;
           const auto &R = model.negative_residual();
           std::vector<Point<3>> support(model.get_dof_handler().n_dofs());
           DoFTools::map_dofs_to_support_points(MappingQ1<3>(),
@@ -520,7 +523,7 @@ namespace
                                              0, m[0], m[2], 0, m[3], m[1]}),
                                  model.iterate());
         const ContactCounts counts =
-          model.assemble(NonlinearScheme::newton, false);
+          model.evaluate_residual(NonlinearScheme::newton).counts;
         const double e12 = 0.5 * (m[2] + m[3]);
         const double exact =
           Dm * area *

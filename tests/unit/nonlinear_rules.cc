@@ -13,6 +13,8 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <nitsche_contact/model_registry.h>
+#include <nitsche_contact/models/common/model_base.h>
 #include <nitsche_contact/nonlinear/globalisation.h>
 #include <nitsche_contact/nonlinear/nonlinear_solver.h>
 #include <nitsche_contact/nonlinear/stopping_rules.h>
@@ -21,6 +23,7 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 
 using namespace dealii;
 using namespace NitscheContact;
@@ -41,22 +44,18 @@ namespace
       }
   }
 
-  class SpringChain : public ContactModel,
-                      public PotentialEnergy,
-                      public SolveAccuracy,
-                      public RigidMotionScale
+  class SpringChain : public ModelBase<Vector<double>>
   {
   public:
     SpringChain(const unsigned int n, const double load, const double gap)
       : A(n, n)
       , f(n)
       , g(n)
-      , u(n)
-      , base(n)
-      , du(n)
       , residual(n)
-      , reference(n, false)
     {
+      solution.reinit(n);
+      base.reinit(n);
+      increment.reinit(n);
       for (unsigned int i = 0; i < n; ++i)
         {
           A(i, i) = 2.;
@@ -82,58 +81,11 @@ namespace
     ProblemSize
     problem_size() const override
     {
-      return {u.size(), 1.};
+      return {solution.size(), 1.};
     }
     void
     set_load_factor(double) override
     {}
-    ContactCounts
-    assemble(NonlinearScheme, const bool with_matrix) override
-    {
-      ContactCounts c;
-      K = A;
-      A.vmult(residual, u);
-      residual -= f;
-      for (unsigned int i = 0; i < u.size(); ++i)
-        {
-          const bool active = u[i] < g[i];
-          if (active)
-            {
-              residual[i] -= r * (g[i] - u[i]);
-              K(i, i) += r;
-            }
-          c.n_points++;
-          c.n_active += active;
-          c.n_changed += active != reference[i];
-          c.hash = 1099511628211ull * c.hash + (active ? 2 : 1);
-          if (with_matrix)
-            reference[i] = active;
-        }
-      c.residual_norm = residual.l2_norm();
-      return c;
-    }
-    unsigned int
-    solve_linear() override
-    {
-      FullMatrix<double> inverse(K);
-      inverse.gauss_jordan();
-      inverse.vmult(du, residual);
-      du *= -1.;
-      base = u;
-      return 0;
-    }
-    void
-    apply_increment(const double t) override
-    {
-      u = base;
-      u.add(t, du);
-    }
-    EnergyNorms
-    energy_norms() const override
-    {
-      return {std::sqrt(A.matrix_norm_square(du)),
-              std::sqrt(A.matrix_norm_square(u))};
-    }
     CycleResults
     postprocess(const std::vector<Point<2>> &) override
     {
@@ -165,19 +117,11 @@ namespace
     {
       return true;
     }
+    /// J at the current iterate, computed here without an evaluation
     double
-    energy() const override
+    energy_here() const
     {
-      double j = 0.5 * A.matrix_norm_square(u) - f * u;
-      for (unsigned int i = 0; i < u.size(); ++i)
-        if (u[i] < g[i])
-          j += 0.5 * r * (g[i] - u[i]) * (g[i] - u[i]);
-      return j;
-    }
-    double
-    energy_slope() const override
-    {
-      return residual * du;
+      return bulk_energy() + contact_energy();
     }
     bool
     last_solve_accurate() const override
@@ -193,7 +137,7 @@ namespace
         return std::nullopt;
       FullMatrix<double> inverse(K);
       inverse.gauss_jordan();
-      Vector<double> next(u.size());
+      Vector<double> next(solution.size());
       inverse.vmult(next, residual);
       return std::sqrt(A.matrix_norm_square(next));
     }
@@ -201,17 +145,82 @@ namespace
     double
     load_work() const override
     {
-      return f * u;
+      return f * solution;
     }
-    double
-    increment_l2_relative() const override
+    const Vector<double> &
+    negative_residual() const override
     {
-      return du.l2_norm() / u.l2_norm();
+      return residual;
+    }
+    void
+    jacobian_vmult(Vector<double> &y, const Vector<double> &x) const override
+    {
+      K.vmult(y, x);
     }
 
+    using ModelBase::base;
+    using ModelBase::increment;
+    using ModelBase::solution;
     FullMatrix<double> A, K;
-    Vector<double>     f, g, u, base, du, residual;
-    std::vector<bool>  reference;
+    Vector<double>     f, g, residual; ///< residual: -R(U)
+
+  private:
+    ContactCounts
+    assemble_system(NonlinearScheme,
+                    const bool with_matrix,
+                    double    &energy) override
+    {
+      ContactCounts              c;
+      std::vector<unsigned char> point_status(solution.size());
+      K = A;
+      A.vmult(residual, solution);
+      residual -= f;
+      for (unsigned int i = 0; i < solution.size(); ++i)
+        {
+          const bool active = solution[i] < g[i];
+          if (active)
+            {
+              residual[i] -= r * (g[i] - solution[i]);
+              K(i, i) += r;
+            }
+          point_status[i] = active ? 1 : 0;
+        }
+      residual *= -1.;
+      status.count(point_status, c);
+      if (with_matrix)
+        status.accept(point_status, c);
+      c.residual_norm = residual.l2_norm();
+      energy          = contact_energy();
+      return c;
+    }
+    double
+    contact_energy() const
+    {
+      double j = 0.;
+      for (unsigned int i = 0; i < solution.size(); ++i)
+        if (solution[i] < g[i])
+          j += 0.5 * r * (g[i] - solution[i]) * (g[i] - solution[i]);
+      return j;
+    }
+    double
+    bulk_energy() const override
+    {
+      return 0.5 * A.matrix_norm_square(solution) - f * solution;
+    }
+    unsigned int
+    solve_newton_system() override
+    {
+      FullMatrix<double> inverse(K);
+      inverse.gauss_jordan();
+      inverse.vmult(increment, residual);
+      base = solution;
+      return 0;
+    }
+    double
+    energy_norm(const Vector<double> &v) const override
+    {
+      return std::sqrt(A.matrix_norm_square(v));
+    }
   };
 
   /// The solution by enumeration of every contact set S: the one whose
@@ -219,7 +228,7 @@ namespace
   Vector<double>
   enumerated_solution(const SpringChain &m)
   {
-    const unsigned int n = m.u.size();
+    const unsigned int n = m.solution.size();
     for (unsigned int s = 0; s < (1u << n); ++s)
       {
         FullMatrix<double> K(m.A);
@@ -262,11 +271,11 @@ namespace
     std::ostringstream text;
     ConditionalOStream log(text, true);
     NonlinearSolver    solver(settings, log);
-    PhaseTimes         times;
+    const auto         times = make_phase_timer();
     SolveStage         stage;
-    const NonlinearResult result = solver.solve(m, stage, times);
+    const NonlinearResult result = solver.solve(m, stage, *times);
     check(result.converged, name + ": converged");
-    check(distance(m.u, enumerated_solution(m)) < 1e-12,
+    check(distance(m.solution, enumerated_solution(m)) < 1e-12,
           name + ": the solution of the enumeration of contact sets");
     check(text.str().find(log_must_contain) != std::string::npos,
           name + ": the log says '" + log_must_contain + "'");
@@ -282,11 +291,10 @@ namespace
   {
     SpringChain m(8, -1., -2.);
     m.r = 1e3;
-    PhaseTimes times;
-    ModelView  view(m, NonlinearScheme::newton, times);
-    view.assemble(true);
-    view.solve();
-    const double      slope = view.energy_slope(); // at U_base along dU
+    const auto times = make_phase_timer();
+    ModelView  view(m, NonlinearScheme::newton, *times);
+    view.assemble();
+    const double      slope = view.solve().slope; // at U_base along dU
     NonmonotoneWindow window(0, false);
     view.step_to(1.);
     const StepChoice step = exact_line_search(view, slope, false, false, window);
@@ -294,8 +302,8 @@ namespace
     for (unsigned int k = 0; k <= 100000; ++k)
       {
         m.apply_increment(k * 1e-5);
-        if (m.energy() < best_j)
-          best_j = m.energy(), best_t = k * 1e-5;
+        if (m.energy_here() < best_j)
+          best_j = m.energy_here(), best_t = k * 1e-5;
       }
     out << "       exact line search step " << step.length << std::endl;
     check(step.length < 1. && std::abs(step.length - best_t) < 0.1 * best_t,
@@ -311,16 +319,16 @@ namespace
   {
     SpringChain m(8, -1., -2.);
     m.r = 1e3;
-    PhaseTimes times;
-    ModelView  view(m, NonlinearScheme::newton, times);
-    view.assemble(true);
+    const auto times = make_phase_timer();
+    ModelView  view(m, NonlinearScheme::newton, *times);
+    view.assemble();
     view.solve();
-    const double j0 = m.energy();
+    const double j0 = m.energy_here();
     const double t  = backtracking_step(view, true, 0.);
     m.apply_increment(t);
-    const double jt = m.energy();
+    const double jt = m.energy_here();
     m.apply_increment(2. * t);
-    const double j2t = m.energy();
+    const double j2t = m.energy_here();
     out << "       backtracking step " << t << std::endl;
     check(t < 1. && jt <= j0 && j2t > j0,
           "backtracking: J(t) <= J(0) < J(2t)");
@@ -330,22 +338,69 @@ namespace
   check_nonmonotone_window()
   {
     SpringChain m(3, -1., -2.);
-    PhaseTimes  times;
-    ModelView   view(m, NonlinearScheme::newton, times);
+    const auto  times = make_phase_timer();
+    ModelView   view(m, NonlinearScheme::newton, *times);
+    const Evaluation  at_start = view.evaluate();
     NonmonotoneWindow window(2, true);
     for (const double bound : {5., 3., 4.})
       {
         window.set_next_bound(bound);
-        window.record_iterate(view);
+        window.record_iterate(view, at_start);
       }
     // the largest of the last two bounds is 4; Armijo: 4 + 1e-4 * (-1)
     check(window.accepts(3.9998, -1.) && !window.accepts(4., -1.),
           "non-monotone window: accepts below max of the last 2 bounds "
           "minus Armijo's decrease");
     NonmonotoneWindow off(2, false);
-    off.record_iterate(view);
+    off.record_iterate(view, at_start);
     check(!off.active() && !off.accepts(-1e10, -1.),
           "non-monotone window: off before a nested start");
+  }
+
+  /// An evaluation belongs to the state it was taken at: J of it at that
+  /// state is the energy there, at any other it is refused.
+  void
+  check_evaluation_state()
+  {
+    SpringChain      m(4, -1., -2.);
+    const auto       times = make_phase_timer();
+    ModelView        view(m, NonlinearScheme::newton, *times);
+    const Evaluation at_start = view.assemble();
+    view.solve();
+    check(std::abs(m.energy(at_start) - m.energy_here()) <=
+            1e-14 * std::abs(m.energy_here()),
+          "evaluation: J of it at its own state");
+    view.step_to(0.5);
+    bool refused = false;
+    try
+      {
+        m.energy(at_start);
+      }
+    catch (const std::logic_error &)
+      {
+        refused = true;
+      }
+    check(refused, "evaluation: J of it at another state is refused");
+  }
+
+  /// A second model of an existing name is refused at start-up.
+  void
+  check_registry()
+  {
+    ModelRegistry::check();
+    const ModelRegistry::Entry first = ModelRegistry::entries().front();
+    ModelRegistry::add(first);
+    std::string message;
+    try
+      {
+        ModelRegistry::check();
+      }
+    catch (const std::logic_error &e)
+      {
+        message = e.what();
+      }
+    check(message.find("'" + first.name + "'") != std::string::npos,
+          "registry: a duplicate name is refused, naming it");
   }
 
   void
@@ -413,13 +468,13 @@ namespace
   check_stopping_rules()
   {
     SpringChain m(8, -1., -2.);
-    m.u = enumerated_solution(m);
-    PhaseTimes times;
-    ModelView  view(m, NonlinearScheme::newton, times);
-    ContactCounts counts = view.assemble(true);
+    m.solution = enumerated_solution(m);
+    const auto times = make_phase_timer();
+    ModelView  view(m, NonlinearScheme::newton, *times);
+    ContactCounts counts = view.assemble().counts;
     view.solve();
     view.step_to(1.);
-    counts = view.assemble(true);
+    counts = view.assemble().counts;
     LastStep last{true, 1e-14};
     check(active_set_stop(view, counts, last, 1e-10, false).has_value() &&
             !active_set_stop(view, counts, last, 1e-10, true) &&
@@ -435,10 +490,10 @@ namespace
     // a rigid motion: the chain without springs between its ends
     SpringChain free_chain(3, -1., -2.);
     free_chain.A = 0.;
-    free_chain.u = -2.5;
-    free_chain.base = free_chain.u;
-    free_chain.du   = 1e-3;
-    ModelView free_view(free_chain, NonlinearScheme::newton, times);
+    free_chain.solution  = -2.5;
+    free_chain.base      = free_chain.solution;
+    free_chain.increment = 1e-3;
+    ModelView free_view(free_chain, NonlinearScheme::newton, *times);
     const Correction rigid =
       measure_correction(free_view, counts, LastStep(), 2, 0, false);
     check(rigid.rigid && std::abs(rigid.relative - 1e-3 / 2.5) < 1e-15,
@@ -453,6 +508,8 @@ main()
   check_exact_line_search();
   check_backtracking();
   check_nonmonotone_window();
+  check_evaluation_state();
+  check_registry();
   check_damping_switch();
   check_stagnation();
   check_stopping_rules();

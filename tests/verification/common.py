@@ -42,6 +42,26 @@ def parameter_entries(text):
     return found
 
 
+_models = None
+
+
+def registered_models():
+    """The (name, description) of every model, as `nitsche-contact --help`
+    lists them, and the default model (of 'set Model' in the listing)."""
+    global _models
+    if _models is not None:
+        return _models
+    help_text = subprocess.run([_exe, "--help"], check=True,
+                               stdout=subprocess.PIPE, text=True).stdout
+    block = help_text.split("Models:\n", 1)[1].split("\n\n", 1)[0]
+    models = [tuple(line.strip().split(None, 1)) for line in block.splitlines()]
+    listing = subprocess.run([_exe, "--print-parameters"], check=True,
+                             stdout=subprocess.PIPE, text=True).stdout
+    default = re.search(r"(?m)^set Model\s*=\s*(\w+)", listing).group(1)
+    _models = (models, default)
+    return _models
+
+
 def entry_subsections(entry, text):
     """The subsections of `entry` in nitsche-contact's parameter listing. An
     entry name found only in the models' own subsections (e.g. 'Contact
@@ -54,10 +74,12 @@ def entry_subsections(entry, text):
                                  stdout=subprocess.PIPE, text=True).stdout
         _entry_paths = [path for path, _ in parameter_entries(listing)]
     found = [p[:-1] for p in _entry_paths if p[-1] == entry]
-    models = ("Elasticity", "Kirchhoff", "Membrane", "Mindlin")
-    if len(found) > 1 and all(p and p[0] in models for p in found):
+    names, default = registered_models()
+    # a model's own subsection is its name, capitalised
+    sections = [name.capitalize() for name, _ in names]
+    if len(found) > 1 and all(p and p[0] in sections for p in found):
         m = re.findall(r"(?m)^\s*set Model\s*=\s*(\w+)", text)
-        model = (m[-1] if m else "elasticity").capitalize()
+        model = (m[-1] if m else default).capitalize()
         found = [p for p in found if p[0] == model]
     if len(found) != 1:
         fail("entry '%s': %d subsections in the parameter listing" % (entry, len(found)))

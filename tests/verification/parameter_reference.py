@@ -6,10 +6,14 @@ without the regenerated page fails here; regenerate with
 
 The paper files (parameters/paper_*.prm, kirchhoff_nitsche.prm) set only
 entries whose value differs from the default ('Model' apart, which names
-the file's model), so that a change of a default reaches them."""
+the file's model), so that a change of a default reaches them.
+
+README.md's model table names the models of `--help` (in an order of its
+own: the 3D model, the plates, the membrane), and
+each model has its own subsection (its name, capitalised)."""
 import glob, os, re, subprocess, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import parse_args, check, finish, parameter_entries
+from common import parse_args, check, finish, parameter_entries, registered_models
 
 args = parse_args()
 root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
@@ -44,6 +48,18 @@ def same_value(a, b):
                 return False
     return True
 
+
+models, default = registered_models()
+names = [name for name, _ in models]
+with open(os.path.join(root, "README.md")) as f:
+    table = re.findall(r"(?m)^\| `(\w+)` \|", f.read())
+check(sorted(table) == sorted(names),
+      "README.md's model table %s names the models of --help %s"
+      % (table, names))
+top_sections = re.findall(r"(?m)^subsection (\S.*)$", listing)
+check(all(n.capitalize() in top_sections for n in names),
+      "every model has a subsection of its own in the parameter listing")
+check(default in names, "the default model '%s' is registered" % default)
 
 defaults = entries(listing)
 papers = sorted(glob.glob(os.path.join(root, "parameters", "paper_*.prm")) +

@@ -13,6 +13,7 @@
 #include <nitsche_contact/parameters.h>
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -50,9 +51,11 @@ namespace NitscheContact
       bool          converged  = false;
       ContactCounts counts;
       CycleResults  results;
-      PhaseTimes    times;
+      /// the wall times of the cycle's phases (Phase::setup, ...; shared by
+      /// the copies of the record)
+      std::shared_ptr<dealii::TimerOutput> timer = make_phase_timer();
       /// the predictor's DoFs on its last cycle (0: no predictor), its
-      /// iterations and seconds (part of times.setup) for this cycle
+      /// iterations and seconds (part of the setup phase) for this cycle
       std::uint64_t predictor_dofs       = 0;
       unsigned int  predictor_iterations = 0;
       double        predictor_seconds    = 0.;

@@ -76,9 +76,10 @@ namespace NitscheContact
     /// length 0 or enabled = false: every step must decrease J.
     NonmonotoneWindow(unsigned int length, bool enabled);
 
-    /// Record the bound of J at the current iterate, just assembled.
+    /// Record the bound of J at the current iterate, of which `at_iterate`
+    /// is the evaluation.
     void
-    record_iterate(ModelView &model);
+    record_iterate(ModelView &model, const Evaluation &at_iterate);
 
     /// Whether a bound is known at the current iterate.
     bool
@@ -128,6 +129,7 @@ namespace NitscheContact
               const NonlinearSettings &settings,
               double                   relative_correction,
               double                   residual_norm,
+              double                   slope_at_start,
               bool                     damping,
               NonmonotoneWindow       &window);
 

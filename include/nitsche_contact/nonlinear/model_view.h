@@ -1,6 +1,6 @@
 // The model as the nonlinear loop sees it: the calls the loop makes, each
-// one timed into the phases of the cycle, and the model's optional
-// abilities, looked up once per solve.
+// one timed into a phase of the cycle's TimerOutput, and the model's
+// optional abilities, looked up once per solve.
 #ifndef nitsche_contact_nonlinear_model_view_h
 #define nitsche_contact_nonlinear_model_view_h
 
@@ -15,14 +15,21 @@ namespace NitscheContact
   class ModelView
   {
   public:
-    ModelView(ContactModel &model, NonlinearScheme scheme, PhaseTimes &times);
+    ModelView(ContactModel        &model,
+              NonlinearScheme      scheme,
+              dealii::TimerOutput &timer);
 
-    /// ContactModel::assemble() with the scheme of the run.
-    ContactCounts
-    assemble(bool with_matrix);
+    /// The Newton system at the current iterate, with the scheme of the
+    /// run (reusing the last evaluate() when it was at this iterate).
+    Evaluation
+    assemble();
+
+    /// The residual and the contact status at the current iterate.
+    Evaluation
+    evaluate();
 
     /// ContactModel::solve_linear().
-    unsigned int
+    LinearSolve
     solve();
 
     /// U = U_base + t dU.
@@ -36,13 +43,10 @@ namespace NitscheContact
     bool
     has_energy() const;
 
-    /// J at the current iterate; NaN without an energy.
+    /// J at the iterate of `evaluation`, the current one; NaN without an
+    /// energy.
     double
-    energy();
-
-    /// R(U).dU at the current iterate; NaN without an energy.
-    double
-    energy_slope();
+    energy(const Evaluation &evaluation);
 
     /// Prepare phi'(t) without assembling; false if the model cannot.
     bool
@@ -52,11 +56,11 @@ namespace NitscheContact
     double
     line_slope(double t);
 
-    /// SolveAccuracy::last_solve_accurate(); false without the ability.
+    /// ContactModel::last_solve_accurate().
     bool
     last_solve_accurate() const;
 
-    /// SolveAccuracy::estimated_correction(); none without the ability.
+    /// ContactModel::estimated_correction().
     std::optional<double>
     estimated_correction();
 
@@ -65,7 +69,7 @@ namespace NitscheContact
     bool
     is_rigid_motion(double solution_energy_norm) const;
 
-    /// RigidMotionScale::increment_l2_relative(); NaN without the ability.
+    /// ContactModel::increment_l2_relative().
     double
     increment_l2_relative() const;
 
@@ -74,14 +78,13 @@ namespace NitscheContact
     load_norm() const;
 
   private:
-    ContactModel               &base;
-    const NonlinearScheme       scheme;
-    PhaseTimes                 &times;
-    PotentialEnergy            *potential;
-    FastLineSlope              *fast_slope;
-    const SolveAccuracy        *accuracy;
-    const RigidMotionScale     *rigid;
-    const ResidualScale        *residual_scale;
+    ContactModel              &base;
+    const NonlinearScheme      scheme;
+    dealii::TimerOutput       &timer;
+    FastLineSlope             *fast_slope;
+    const ResidualScale       *residual_scale;
+    /// the last evaluate(), for assemble() at the same iterate
+    std::optional<Evaluation> last_residual;
   };
 
   /// |U|_a^2 below this fraction of |F.U| is a rigid motion up to round-off.

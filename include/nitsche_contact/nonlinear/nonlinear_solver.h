@@ -54,7 +54,9 @@ namespace NitscheContact
     /// Solve the model's contact problem on its current mesh, starting
     /// from its current iterate.
     NonlinearResult
-    solve(ContactModel &model, const SolveStage &stage, PhaseTimes &times);
+    solve(ContactModel        &model,
+          const SolveStage    &stage,
+          dealii::TimerOutput &timer);
 
   private:
     const NonlinearSettings     settings;

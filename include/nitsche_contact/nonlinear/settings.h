@@ -2,8 +2,13 @@
 #ifndef nitsche_contact_nonlinear_settings_h
 #define nitsche_contact_nonlinear_settings_h
 
+#include <deal.II/base/timer.h>
+
 #include <nitsche_contact/nitsche_kernel.h>
 
+#include <map>
+#include <memory>
+#include <ostream>
 #include <string>
 
 namespace NitscheContact
@@ -34,6 +39,16 @@ namespace NitscheContact
     bool            print_iterations   = true;
   };
 
+  /// The phases of a cycle, as sections of the cycle's dealii::TimerOutput.
+  namespace Phase
+  {
+    inline constexpr const char *setup       = "setup";
+    inline constexpr const char *assembly    = "assembly";
+    inline constexpr const char *solve       = "solve";
+    inline constexpr const char *postprocess = "postprocess";
+    inline constexpr const char *output      = "output";
+  } // namespace Phase
+
   /// Wall-clock seconds per phase of one cycle.
   struct PhaseTimes
   {
@@ -43,6 +58,33 @@ namespace NitscheContact
     double postprocess = 0.;
     double output      = 0.;
   };
+
+  /// The wall times of the sections of `timer` (0 for a phase not entered).
+  inline PhaseTimes
+  phase_times(const dealii::TimerOutput &timer)
+  {
+    const std::map<std::string, double> t =
+      timer.get_summary_data(dealii::TimerOutput::total_wall_time);
+    const auto of = [&t](const char *phase) {
+      const auto p = t.find(phase);
+      return p == t.end() ? 0. : p->second;
+    };
+    return {of(Phase::setup),
+            of(Phase::assembly),
+            of(Phase::solve),
+            of(Phase::postprocess),
+            of(Phase::output)};
+  }
+
+  /// A TimerOutput that measures wall times and prints nothing (the driver
+  /// writes them per cycle).
+  inline std::unique_ptr<dealii::TimerOutput>
+  make_phase_timer()
+  {
+    static std::ostream silent(nullptr);
+    return std::make_unique<dealii::TimerOutput>(
+      silent, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
+  }
 
   /// "newton" or "fixed point", for logs.
   inline std::string

@@ -90,13 +90,6 @@ namespace NitscheContact
     void
     clear();
 
-    /// global sizes of the two coarse problems
-    std::pair<std::size_t, std::size_t>
-    coarse_sizes() const
-    {
-      return {bending_matrix.m(), membrane_matrix.m()};
-    }
-
   private:
     const dealii::TrilinosWrappers::SparseMatrix *matrix = nullptr;
     bool                                          symmetric = true;

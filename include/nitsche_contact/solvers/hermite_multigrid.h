@@ -361,12 +361,6 @@ namespace NitscheContact
     {
       return L + 1;
     }
-    /// Cells per direction on the coarsest level.
-    std::pair<unsigned int, unsigned int>
-    coarse_cells() const
-    {
-      return {nx0, ny0};
-    }
 
   private:
     class Transfer;

@@ -16,15 +16,6 @@ namespace NitscheContact
   namespace
   {
 
-    std::uint64_t
-    status_hash(const std::vector<unsigned char> &status)
-    {
-      std::uint64_t h = 1469598103934665603ull;
-      for (const unsigned char s : status)
-        h = (h ^ s) * 1099511628211ull;
-      return h;
-    }
-
     /// The linearisations (u_n, sigma_n, u_t, sigma_t) of the n shape
     /// functions phi_i = N_i e_comp[i] at face quadrature point q.
     void
@@ -432,8 +423,9 @@ namespace NitscheContact
   }
 
   ContactCounts
-  ElasticityModel::assemble(const NonlinearScheme scheme,
-                            const bool            with_matrix)
+  ElasticityModel::assemble_system(const NonlinearScheme scheme,
+                                   const bool            with_matrix,
+                                   double               &contact_energy)
   {
     if (theta_matrix_stale)
       assemble_theta_matrix();
@@ -450,9 +442,9 @@ namespace NitscheContact
     C.vmult(residual, solution);
     residual.sadd(-1., load_factor, load);
 
-    std::vector<unsigned char> status;
+    std::vector<unsigned char> point_status;
     ContactCounts              counts;
-    double                     contact_energy = 0.;
+    double                     local_contact_energy = 0.;
     // 'Stick step on slip reversal': the q of every point at the iterates
     // from which steps are taken, and the difference R_branch - R of the
     // points whose step uses the stick branch (added to the right-hand
@@ -463,8 +455,8 @@ namespace NitscheContact
     std::vector<Tensor<1, 3>> qs;
     if (track_q)
       step_correction = 0.;
-    assemble_contact(scheme, with_matrix, track_q, status, qs, counts,
-                     contact_energy);
+    assemble_contact(scheme, with_matrix, track_q, point_status, qs, counts,
+                     local_contact_energy);
     if (with_matrix)
       system_matrix.compress(VectorOperation::add);
     if (track_q)
@@ -476,9 +468,9 @@ namespace NitscheContact
         residual(line.index) = 0.;
     residual.compress(VectorOperation::insert);
 
-    count_contact_points(status, qs, with_matrix, counts);
+    count_contact_points(point_status, qs, with_matrix, counts);
     counts.residual_norm = residual.l2_norm();
-    last_contact_energy = Utilities::MPI::sum(contact_energy, comm);
+    contact_energy       = Utilities::MPI::sum(local_contact_energy, comm);
     if (friction == 0.)
       counts.n_stick = 0;
     return counts;
@@ -488,7 +480,7 @@ namespace NitscheContact
   ElasticityModel::assemble_contact(const NonlinearScheme       scheme,
                                     const bool                  with_matrix,
                                     const bool                  track_q,
-                                    std::vector<unsigned char> &status,
+                                    std::vector<unsigned char> &point_status,
                                     std::vector<Tensor<1, 3>>  &qs,
                                     ContactCounts              &counts,
                                     double                     &contact_energy)
@@ -512,7 +504,7 @@ namespace NitscheContact
     for (unsigned int i = 0; i < n; ++i)
       comp[i] = fe.system_to_component_index(i).first;
 
-    const bool compare_q = track_q && previous_q.size() == previous_status.size();
+    const bool compare_q = track_q && previous_q.size() == status.bytes().size();
     Vector<double> cell_difference(n), point_law(n), point_branch(n);
     bool           cell_reversed = false;
     for_each_contact_face(
@@ -528,8 +520,8 @@ namespace NitscheContact
             const PointInput in =
               face_point_input(fvf, q, u_values[q], u_grads[q], r);
             const PointState st = evaluate_contact_point(in, scheme);
-            const std::size_t k = status.size();
-            status.push_back(static_cast<unsigned char>(st.status));
+            const std::size_t k = point_status.size();
+            point_status.push_back(static_cast<unsigned char>(st.status));
             if (track_q)
               qs.push_back(st.q);
             contact_energy += contact_energy_density(in, st) * fvf.JxW(q);
@@ -547,7 +539,7 @@ namespace NitscheContact
             const bool reversed =
               compare_q && k < previous_q.size() &&
               slip_reversed(st, previous_q[k],
-                            static_cast<PointStatus>(previous_status[k]));
+                            status[k]);
             if (reversed)
               {
                 // the law's residual, the stick branch's matrix, and the
@@ -598,32 +590,18 @@ namespace NitscheContact
 
   void
   ElasticityModel::count_contact_points(
-    const std::vector<unsigned char> &status,
-    std::vector<Tensor<1, 3>>        &qs,
-    const bool                        with_matrix,
-    ContactCounts                    &counts)
+    std::vector<unsigned char> &point_status,
+    std::vector<Tensor<1, 3>>  &qs,
+    const bool                  with_matrix,
+    ContactCounts              &counts)
   {
-    for (const unsigned char s : status)
-      {
-        ++counts.n_points;
-        if (s != 0)
-          ++counts.n_active;
-        if (s == 1)
-          ++counts.n_stick;
-        if (s == 2)
-          ++counts.n_slip;
-      }
+    // (n_reversed is counted by assemble_contact())
+    status.count(point_status, counts);
     if (with_matrix)
       {
-        if (previous_status.size() == status.size())
-          for (unsigned int i = 0; i < status.size(); ++i)
-            counts.n_changed += (status[i] != previous_status[i]);
-        else
-          counts.n_changed = counts.n_active;
-        previous_status = status;
-        previous_q      = std::move(qs);
+        status.accept(point_status, counts);
+        previous_q = std::move(qs);
       }
-    counts.hash = status_hash(status);
     counts.n_points  = Utilities::MPI::sum(counts.n_points, comm);
     counts.n_active  = Utilities::MPI::sum(counts.n_active, comm);
     counts.n_stick   = Utilities::MPI::sum(counts.n_stick, comm);
@@ -639,10 +617,8 @@ namespace NitscheContact
   }
 
   double
-  ElasticityModel::energy() const
+  ElasticityModel::bulk_energy() const
   {
-    if (!has_energy())
-      return std::numeric_limits<double>::quiet_NaN();
     // 1/2 a(U,U) by element integrals: no cancellation between the large
     // through-thickness stiffness entries, unlike U.AU.
     const QGauss<3> quadrature(degree + 1);
@@ -669,17 +645,7 @@ namespace NitscheContact
               bulk += 0.5 * e * fv.JxW(q);
             }
         }
-    return Utilities::MPI::sum(bulk, comm) - load_factor * (load * solution) +
-           last_contact_energy;
-  }
-
-  double
-  ElasticityModel::energy_slope() const
-  {
-    if (!has_energy())
-      return std::numeric_limits<double>::quiet_NaN();
-    // `residual` holds -R(U) on the unconstrained rows
-    return -(residual * increment);
+    return Utilities::MPI::sum(bulk, comm) - load_factor * (load * solution);
   }
 
   void

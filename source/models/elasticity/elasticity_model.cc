@@ -152,6 +152,7 @@ namespace NitscheContact
     if (plate)
       lift_plate_solution();
     ghosted = solution;
+    state_changed();
     assemble_bulk();
 
     trace_constant_value = trace_constant();
@@ -204,6 +205,7 @@ namespace NitscheContact
     // rebuilt by the next setup_cycle() or assemble(), whichever is first
     if (scale_friction(friction, prm.friction, scale))
       theta_matrix_stale = true;
+    state_changed();
   }
 
   std::uint64_t
@@ -223,14 +225,6 @@ namespace NitscheContact
     return Utilities::MPI::max(h, comm);
   }
 
-  void
-  ElasticityModel::apply_increment(const double step)
-  {
-    solution = base;
-    solution.add(step, increment);
-    ghosted = solution;
-  }
-
   double
   ElasticityModel::energy_norm(const TrilinosWrappers::MPI::Vector &v) const
   {
@@ -241,18 +235,6 @@ namespace NitscheContact
     w.compress(VectorOperation::insert);
     bulk_matrix.vmult(aw, w);
     return std::sqrt(std::max(0., w * aw));
-  }
-
-  double
-  ElasticityModel::increment_energy_norm() const
-  {
-    return energy_norm(increment);
-  }
-
-  double
-  ElasticityModel::solution_energy_norm() const
-  {
-    return energy_norm(solution);
   }
 } // namespace NitscheContact
 

@@ -24,7 +24,7 @@ namespace NitscheContact
   }
 
   unsigned int
-  ElasticityModel::solve_linear()
+  ElasticityModel::solve_newton_system()
   {
     base = solution;
     increment = 0.;

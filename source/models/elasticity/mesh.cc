@@ -247,8 +247,9 @@ namespace NitscheContact
     increment.reinit(locally_owned, comm);
     ghosted.reinit(locally_owned, locally_relevant, comm);
     step_correction.reinit(locally_owned, comm);
-    previous_status.clear();
+    status.clear();
     previous_q.clear();
+    state_changed();
     // the body's compliance at the scale l of the regularisation: that of
     // a plate, l^4/D, where l is large against the thickness, that of an
     // elastic half-space, l/E, where it is small

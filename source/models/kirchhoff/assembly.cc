@@ -107,24 +107,11 @@ namespace NitscheContact
 
 
   ContactCounts
-  KirchhoffModel::assemble(const NonlinearScheme scheme, const bool with_matrix)
+  KirchhoffModel::assemble_system(const NonlinearScheme scheme,
+                                  const bool            with_matrix,
+                                  double               &contact_energy)
   {
-    const unsigned int nq = quadrature.size();
-
-    if (with_matrix && trial.valid && trial.scheme == scheme)
-      {
-        // The residual, the status and the counts at this iterate are those
-        // of the last assemble(scheme, false): build the matrix only.
-        trial.valid = false;
-        assemble_matrix(trial.status);
-        previous_status.swap(trial.status);
-        status_settled = (trial.counts.n_changed == 0);
-        return trial.counts;
-      }
-    trial.valid = false;
-
-    ContactCounts      counts;
-    std::uint64_t      hash = 1469598103934665603ull; // FNV-1a
+    const unsigned int nq          = quadrature.size();
     const bool         with_energy = has_energy();
     const std::size_t  n_cells     = cells.size();
 
@@ -172,8 +159,9 @@ namespace NitscheContact
                                                 cell_residual.begin());
                 if (with_energy)
                   energy += energy_density(in, st) * kit.JxW[q];
-                point_status[c * nq + q] =
-                  (st.status != PointStatus::inactive) ? 1 : 0;
+                point_status[c * nq + q] = static_cast<unsigned char>(
+                  st.status != PointStatus::inactive ? PointStatus::stick :
+                                                       PointStatus::inactive);
               }
             cell_energies[c] = energy;
             // the right-hand side is -R(U)
@@ -183,8 +171,8 @@ namespace NitscheContact
       },
       64);
 
-    rhs                   = 0.;
-    double contact_energy = 0.;
+    rhs            = 0.;
+    contact_energy = 0.;
     for (std::size_t c = 0; c < n_cells; ++c)
       {
         constraints.distribute_local_to_global(
@@ -194,39 +182,28 @@ namespace NitscheContact
           rhs);
         contact_energy += cell_energies[c];
       }
-    for (std::size_t k = 0; k < point_status.size(); ++k)
-      {
-        if (point_status[k])
-          {
-            ++counts.n_active;
-            hash = (hash ^ k) * 1099511628211ull;
-          }
-        if (point_status[k] != previous_status[k])
-          ++counts.n_changed;
-      }
+    ContactCounts counts;
+    status.count(point_status, counts);
+    counts.residual_norm = rhs.l2_norm();
     if (with_matrix)
       {
-        previous_status.swap(point_status);
-        assemble_matrix(previous_status);
+        status.accept(point_status, counts);
+        assemble_matrix(status.bytes());
       }
     else
-      trial.status.swap(point_status);
+      residual_counts = counts;
+    return counts;
+  }
 
-    if (with_matrix)
-      status_settled = (counts.n_changed == 0);
-    counts.n_points      = cells.size() * nq;
-    counts.n_stick       = counts.n_active;
-    counts.hash          = hash;
-    counts.residual_norm = rhs.l2_norm();
-    last_contact_energy  = with_energy ?
-                             contact_energy :
-                             std::numeric_limits<double>::quiet_NaN();
-    if (!with_matrix)
-      {
-        trial.valid  = true;
-        trial.scheme = scheme;
-        trial.counts = counts;
-      }
+
+
+  ContactCounts
+  KirchhoffModel::assemble_matrix_at_last_residual(
+    const NonlinearScheme /*scheme*/)
+  {
+    const ContactCounts counts = residual_counts;
+    status.accept(point_status, counts);
+    assemble_matrix(status.bytes());
     return counts;
   }
 
@@ -318,10 +295,8 @@ namespace NitscheContact
 
 
   double
-  KirchhoffModel::energy() const
+  KirchhoffModel::bulk_energy() const
   {
-    if (!has_energy())
-      return std::numeric_limits<double>::quiet_NaN();
     // 1/2 a(U,U) - (f,U) from quadrature-point values of the Hessian (no
     // cancellation between the large entries of the bending matrix).
     const unsigned int nq = quadrature.size();
@@ -347,18 +322,7 @@ namespace NitscheContact
             work += load_at(c, q) * w * kit.JxW[q];
           }
       }
-    return bulk - work + last_contact_energy;
-  }
-
-
-
-  double
-  KirchhoffModel::energy_slope() const
-  {
-    if (!has_energy())
-      return std::numeric_limits<double>::quiet_NaN();
-    // `rhs` holds -R(U) (condensed), `increment` the last Newton correction
-    return -(rhs * increment);
+    return bulk - work;
   }
 
 

@@ -230,7 +230,7 @@ namespace NitscheContact
     setup_constant_matrix();
 
     tabulate_load_and_obstacle();
-    previous_status.assign(cells.size() * quadrature.size(), 255);
+    status.clear();
     warn_about_gsv_shift();
     assemble_unit_load();
   }
@@ -311,7 +311,7 @@ namespace NitscheContact
   void
   KirchhoffModel::setup_cycle(const unsigned int cycle)
   {
-    trial.valid = false;
+    state_changed();
     if (cycle == 0)
       {
         make_grid();
@@ -398,32 +398,6 @@ namespace NitscheContact
   KirchhoffModel::mesh_size() const
   {
     return kit.h_K;
-  }
-
-
-
-  void
-  KirchhoffModel::apply_increment(const double step)
-  {
-    trial.valid = false;
-    solution = base;
-    solution.add(step, increment);
-  }
-
-
-
-  double
-  KirchhoffModel::increment_energy_norm() const
-  {
-    return energy_norm(increment);
-  }
-
-
-
-  double
-  KirchhoffModel::solution_energy_norm() const
-  {
-    return energy_norm(solution);
   }
 } // namespace NitscheContact
 

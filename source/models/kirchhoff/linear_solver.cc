@@ -96,7 +96,7 @@ namespace NitscheContact
     // its coarse levels follow it exactly: Galerkin products, cell by cell,
     // on the first matrix of a mesh; then updates by the contact matrices
     // of the cells whose contact status changed (none: nothing to do).
-    multigrid->set_status(previous_status);
+    multigrid->set_status(status.bytes());
     if (check_multigrid)
       {
         const double defect = multigrid->galerkin_defect(system_matrix);
@@ -122,7 +122,7 @@ namespace NitscheContact
 
 
   unsigned int
-  KirchhoffModel::solve_linear()
+  KirchhoffModel::solve_newton_system()
   {
     unsigned int linear_iterations = 0;
     if (use_multigrid)
@@ -135,12 +135,12 @@ namespace NitscheContact
         // 'increment') as the size of this one. (The first solve of a mesh
         // counts every point as changed and uses the loose tolerance.)
         const double tolerance = HermiteMultigrid::newton_step_tolerance(
-          status_settled,
+          status.is_settled(),
           krylov_tolerance,
           loose_krylov_tolerance,
           prm.nonlinear.tolerance,
-          status_settled ? energy_norm(increment) : 0.,
-          status_settled ? energy_norm(solution) : 0.);
+          status.is_settled() ? energy_norm(increment) : 0.,
+          status.is_settled() ? energy_norm(solution) : 0.);
         try
           {
             linear_iterations =
@@ -169,7 +169,7 @@ namespace NitscheContact
           system_matrix,
           x,
           b,
-          ReusedFactorization::change_of_newton_matrix(status_settled ? 0 : 1,
+          ReusedFactorization::change_of_newton_matrix(status.is_settled() ? 0 : 1,
                                                        false),
           jacobian_is_symmetric());
         std::copy(x.begin(), x.end(), increment.begin());

@@ -210,7 +210,7 @@ namespace NitscheContact
     if (kit.inverse_constant > 0.)
       res.extra.emplace_back("gsv_inverse_constant", kit.inverse_constant / D);
     factorization->report_inertia(res.extra);
-    res.extra.emplace_back("energy_norm", solution_energy_norm());
+    res.extra.emplace_back("energy_norm", energy_norm(solution));
     return res;
   }
 

@@ -60,7 +60,9 @@ namespace NitscheContact
 
 
   ContactCounts
-  MembraneModel::assemble(const NonlinearScheme scheme, const bool with_matrix)
+  MembraneModel::assemble_system(const NonlinearScheme scheme,
+                                 const bool            with_matrix,
+                                 double               &contact_energy)
   {
     const unsigned int n  = fe->n_dofs_per_cell();
     const unsigned int nc = contact_quadrature.size(),
@@ -74,12 +76,11 @@ namespace NitscheContact
     std::vector<types::global_dof_index> dofs(n);
     std::vector<ShapeContactData>        shapes(n);
     std::vector<PointInput>              inputs;
-    std::vector<unsigned char> status(previous_status.size());
+    std::vector<unsigned char> point_status(triangulation.n_active_cells() *
+                                            nc);
 
-    ContactCounts counts;
-    std::uint64_t hash           = 1469598103934665603ull; // FNV-1a
-    double        contact_energy = 0.;
-    rhs                          = 0.;
+    contact_energy = 0.;
+    rhs            = 0.;
     if (with_matrix)
       system_matrix = 0.;
 
@@ -129,15 +130,8 @@ namespace NitscheContact
             if (has_energy())
               contact_energy +=
                 contact_energy_density(inputs[q], st) * contact.JxW(q);
-            const std::size_t k = std::size_t(c) * nc + q;
-            status[k] = (st.status != PointStatus::inactive) ? 1 : 0;
-            if (status[k])
-              {
-                ++counts.n_active;
-                hash = (hash ^ k) * 1099511628211ull;
-              }
-            if (status[k] != previous_status[k])
-              ++counts.n_changed;
+            point_status[std::size_t(c) * nc + q] =
+              static_cast<unsigned char>(st.status);
           }
 
         // the right-hand side is -R(U)
@@ -149,24 +143,21 @@ namespace NitscheContact
         else
           constraints.distribute_local_to_global(cell_residual, dofs, rhs);
       }
+    ContactCounts counts;
+    status.count(point_status, counts);
     if (with_matrix)
       {
         system_matrix.compress(VectorOperation::add);
-        previous_status.swap(status);
-        status_settled = (counts.n_changed == 0);
+        status.accept(point_status, counts);
       }
-    counts.n_points      = previous_status.size();
-    counts.n_stick       = counts.n_active;
-    counts.hash          = hash;
     counts.residual_norm = rhs.l2_norm();
-    last_contact_energy  = contact_energy;
     return counts;
   }
 
 
 
   unsigned int
-  MembraneModel::solve_linear()
+  MembraneModel::solve_newton_system()
   {
     const IndexSet owned = complete_index_set(dof_handler.n_dofs());
     TrilinosWrappers::MPI::Vector b(owned, comm), x(owned, comm);
@@ -175,7 +166,7 @@ namespace NitscheContact
       system_matrix,
       x,
       b,
-      ReusedFactorization::change_of_newton_matrix(status_settled ? 0 : 1,
+      ReusedFactorization::change_of_newton_matrix(status.is_settled() ? 0 : 1,
                                                    false),
       /*symmetric*/ prm.theta == 1.);
     std::copy(x.begin(), x.end(), increment.begin());
@@ -187,13 +178,10 @@ namespace NitscheContact
 
 
   double
-  MembraneModel::energy() const
+  MembraneModel::bulk_energy() const
   {
     // 1/2 T |grad w|^2 - q w from quadrature-point values (no cancellation
-    // between matrix entries), plus the contact energy of the last
-    // assemble() at this iterate
-    if (!has_energy())
-      return std::numeric_limits<double>::quiet_NaN();
+    // between matrix entries)
     const unsigned int nb = bulk_quadrature.size();
     FEValues<2>        bulk(*mapping, *fe, bulk_quadrature,
                      update_values | update_gradients | update_JxW_values);
@@ -211,18 +199,7 @@ namespace NitscheContact
                 load_factor * bulk_load[c * nb + q] * w[q]) *
                bulk.JxW(q);
       }
-    return e + last_contact_energy;
-  }
-
-
-
-  double
-  MembraneModel::energy_slope() const
-  {
-    // `rhs` holds -R(U), `increment` the last Newton correction
-    if (!has_energy())
-      return std::numeric_limits<double>::quiet_NaN();
-    return -(rhs * increment);
+    return e;
   }
 
 

@@ -122,9 +122,7 @@ namespace NitscheContact
     system_matrix.reinit(owned, owned, dsp, comm);
     rhs.reinit(dof_handler.n_dofs());
     increment.reinit(dof_handler.n_dofs());
-    previous_status.assign(triangulation.n_active_cells() *
-                             contact_quadrature.size(),
-                           255);
+    status.clear();
     tabulate_cell_data();
   }
 
@@ -240,6 +238,7 @@ namespace NitscheContact
         constraints.distribute(solution);
       }
     base = solution;
+    state_changed();
   }
 
 
@@ -251,15 +250,6 @@ namespace NitscheContact
     for (const auto &cell : triangulation.active_cell_iterators())
       h = std::max(h, longest_side(cell));
     return {dof_handler.n_dofs(), h};
-  }
-
-
-
-  void
-  MembraneModel::apply_increment(const double step)
-  {
-    solution = base;
-    solution.add(step, increment);
   }
 } // namespace NitscheContact
 

@@ -1,6 +1,6 @@
 // Assembly: the constant part of the Newton matrix and the load once per
 // cycle, the residual, contact status and Newton matrix at every iterate,
-// and the potential energy and its slope along the Newton step.
+// and the bulk part of the potential energy.
 #include <deal.II/base/parallel.h>
 
 #include <nitsche_contact/models/mindlin/mindlin_model.h>
@@ -11,22 +11,6 @@
 namespace NitscheContact
 {
   using namespace dealii;
-
-  namespace
-  {
-    /// FNV-1a hash of the status field (cycle detection in the driver).
-    std::uint64_t
-    hash_status(const std::vector<unsigned char> &status)
-    {
-      std::uint64_t h = 1469598103934665603ULL;
-      for (const unsigned char c : status)
-        {
-          h ^= c;
-          h *= 1099511628211ULL;
-        }
-      return h;
-    }
-  } // namespace
 
 
 
@@ -103,7 +87,9 @@ namespace NitscheContact
 
 
   ContactCounts
-  MindlinModel::assemble(const NonlinearScheme scheme, const bool with_matrix)
+  MindlinModel::assemble_system(const NonlinearScheme scheme,
+                                const bool            with_matrix,
+                                double               &contact_energy)
   {
     if (constant_part_stale)
       {
@@ -123,7 +109,7 @@ namespace NitscheContact
     AssemblyPass pass;
     pass.scheme      = scheme;
     pass.with_energy = has_energy();
-    pass.status.resize(previous_status.size());
+    pass.status.resize(cell_grid.size() * contact_quadrature.size());
     // 'Stick step on slip reversal' (see the 3D model): only on the serial
     // path that builds the matrix
     pass.track_q   = build_matrix && friction > 0. &&
@@ -158,7 +144,7 @@ namespace NitscheContact
             assemble_cell(c, pass, scratch, false);
         },
         64);
-    const double contact_energy = add_cell_residuals();
+    contact_energy = add_cell_residuals();
     if (!uniform_cells)
       {
         // the constant part (bulk + theta-terms) U of every cell at once
@@ -176,28 +162,11 @@ namespace NitscheContact
       }
     residual.add(load_factor, load);
 
-    for (std::size_t k = 0; k < pass.status.size(); ++k)
-      {
-        const unsigned char st = pass.status[k];
-        ++counts.n_points;
-        if (st != previous_status[k])
-          ++counts.n_changed;
-        if (st == static_cast<unsigned char>(PointStatus::inactive))
-          continue;
-        ++counts.n_active;
-        if (st == static_cast<unsigned char>(PointStatus::slip))
-          ++counts.n_slip;
-        else
-          ++counts.n_stick;
-      }
-    counts.hash          = hash_status(pass.status);
+    status.count(pass.status, counts);
     counts.residual_norm = residual.l2_norm();
-    last_contact_energy  = pass.with_energy ?
-                             contact_energy :
-                             std::numeric_limits<double>::quiet_NaN();
     if (with_matrix)
       {
-        previous_status.swap(pass.status);
+        status.accept(pass.status, counts);
         previous_q.swap(pass.qs);
         last_changed  = counts.n_changed + counts.n_reversed;
         last_reversed = counts.n_reversed;
@@ -249,7 +218,7 @@ namespace NitscheContact
         // contained in the constant part.
         if (pass.compare_q &&
             slip_reversed(st, previous_q[k],
-                          static_cast<PointStatus>(previous_status[k])))
+                          status[k]))
           {
             // the law's residual, the stick branch's matrix, and the
             // difference of the two residuals for the step
@@ -318,26 +287,11 @@ namespace NitscheContact
 
 
   double
-  MindlinModel::energy_slope() const
+  MindlinModel::bulk_energy() const
   {
-    if (!has_energy())
-      return std::numeric_limits<double>::quiet_NaN();
-    // `residual` holds -R(U) (condensed), `increment` the last Newton correction
-    return -(residual * increment);
-  }
-
-
-
-  double
-  MindlinModel::energy() const
-  {
-    if (!has_energy())
-      return std::numeric_limits<double>::quiet_NaN();
     // 1/2 a(U,U) from the strains at the Gauss points (no cancellation
     // between the large shear entries of the stiffness matrix, whose
-    // contribution is small for a thin plate), minus the load work, plus
-    // the contact energy of the last assemble() (theta = 1 kernel terms,
-    // including -(1/(2r)) sigma_n^2 at inactive points).
+    // contribution is small for a thin plate), minus the load work.
     const unsigned int n  = fe.n_dofs_per_cell();
     const double       nu = prm.poisson_ratio, E = prm.youngs_modulus,
                  t = prm.thickness;
@@ -372,6 +326,6 @@ namespace NitscheContact
                     d.bulk_JxW[q];
           }
       }
-    return bulk - load_factor * (load * solution) + last_contact_energy;
+    return bulk - load_factor * (load * solution);
   }
 } // namespace NitscheContact

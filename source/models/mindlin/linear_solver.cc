@@ -14,7 +14,7 @@ namespace NitscheContact
   using namespace dealii;
 
   unsigned int
-  MindlinModel::solve_linear()
+  MindlinModel::solve_newton_system()
   {
     if (use_multigrid)
       {
@@ -96,7 +96,7 @@ namespace NitscheContact
     // MITC4 cells on top, the status regrouped by BFS cell (the points of
     // its four children, child pos = px + 2 py first) below them.
     const unsigned int         nq = contact_quadrature.size();
-    std::vector<unsigned char> grouped(previous_status.size());
+    std::vector<unsigned char> grouped(status.bytes().size());
     for (unsigned int jc = 0; jc < ny / 2; ++jc)
       for (unsigned int ic = 0; ic < nx / 2; ++ic)
         for (unsigned int pos = 0; pos < 4; ++pos)
@@ -104,11 +104,11 @@ namespace NitscheContact
             const std::size_t child =
               (2 * ic + pos % 2) + std::size_t(nx) * (2 * jc + pos / 2);
             const std::size_t parent = ic + std::size_t(nx / 2) * jc;
-            std::copy(previous_status.begin() + nq * child,
-                      previous_status.begin() + nq * (child + 1),
+            std::copy(status.bytes().begin() + nq * child,
+                      status.bytes().begin() + nq * (child + 1),
                       grouped.begin() + nq * (4 * parent + pos));
           }
-    multigrid->set_status(previous_status, grouped);
+    multigrid->set_status(status.bytes(), grouped);
     if (settings.check_multigrid)
       {
         const double defect = multigrid->galerkin_defect(system_matrix);

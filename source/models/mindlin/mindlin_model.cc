@@ -333,6 +333,7 @@ namespace NitscheContact
     // rebuilt by the next setup_cycle() or assemble(), whichever is first
     if (scale_friction(friction, prm.friction, scale))
       constant_part_stale = true;
+    state_changed();
   }
 
 
@@ -373,9 +374,9 @@ namespace NitscheContact
     if (use_multigrid)
       setup_multigrid_matrices();
     assemble_constant_part();
-    previous_status.assign(cell_grid.size() * contact_quadrature.size(),
-                           0);
+    status.clear();
     previous_q.clear();
+    state_changed();
   }
 
 
@@ -392,15 +393,6 @@ namespace NitscheContact
   MindlinModel::mesh_size() const
   {
     return cell_size;
-  }
-
-
-
-  void
-  MindlinModel::apply_increment(const double step)
-  {
-    solution = base;
-    solution.add(step, increment);
   }
 
 
@@ -430,22 +422,6 @@ namespace NitscheContact
         sum += element_data(c, scratch).bulk_matrix.matrix_norm_square(u);
       }
     return std::sqrt(std::max(sum, 0.));
-  }
-
-
-
-  double
-  MindlinModel::increment_energy_norm() const
-  {
-    return energy_norm(increment);
-  }
-
-
-
-  double
-  MindlinModel::solution_energy_norm() const
-  {
-    return energy_norm(solution);
   }
 } // namespace NitscheContact
 

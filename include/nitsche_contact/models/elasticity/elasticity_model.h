@@ -20,6 +20,7 @@
 #include <nitsche_contact/models/common/model_tools.h>
 #include <nitsche_contact/solvers/column_two_level.h>
 #include <nitsche_contact/model.h>
+#include <nitsche_contact/models/common/model_base.h>
 #include <nitsche_contact/models/mindlin/mindlin_model.h>
 #include <nitsche_contact/parameters.h>
 #include <nitsche_contact/solvers/reused_factorization.h>
@@ -31,12 +32,10 @@
 
 namespace NitscheContact
 {
-  class ElasticityModel : public ContactModel,
-                          public PotentialEnergy,
-                          public FastLineSlope,
-                          public SolveAccuracy,
-                          public RigidMotionScale,
-                          public FrictionContinuation,
+  class ElasticityModel
+    : public ModelBase<dealii::TrilinosWrappers::MPI::Vector>,
+      public FastLineSlope,
+      public FrictionContinuation,
                           public PredictedStart
   {
   public:
@@ -63,11 +62,6 @@ namespace NitscheContact
     {
       return {n_dofs(), mesh_size()};
     }
-    EnergyNorms
-    energy_norms() const override
-    {
-      return {increment_energy_norm(), solution_energy_norm()};
-    }
     /// The Mindlin plate of 'Plate predictor' (nullptr without).
     ContactModel *
     predictor() override
@@ -86,26 +80,11 @@ namespace NitscheContact
     void
     setup_cycle(unsigned int cycle) override;
     void
-    set_load_factor(double factor) override
-    {
-      load_factor = factor;
-    }
-    void
     set_friction_scale(double scale) override;
     std::uint64_t
     n_dofs() const;
     double
     mesh_size() const;
-    ContactCounts
-    assemble(NonlinearScheme scheme, bool with_matrix) override;
-    unsigned int
-    solve_linear() override;
-    void
-    apply_increment(double step) override;
-    double
-    energy() const override;
-    double
-    energy_slope() const override;
     double
     load_work() const override
     {
@@ -120,25 +99,11 @@ namespace NitscheContact
     prepare_line_slope() override;
     double
     line_slope(double t) const override;
-    double
-    increment_l2_relative() const override
-    {
-      return relative_l2(increment, solution);
-    }
     bool
     last_solve_accurate() const override
     {
       return linear_solver.type == "direct";
     }
-    std::optional<double>
-    estimated_correction() const override
-    {
-      return std::nullopt;
-    }
-    double
-    increment_energy_norm() const;
-    double
-    solution_energy_norm() const;
     CycleResults
     postprocess(const std::vector<dealii::Point<2>> &probes) override;
     std::vector<ContactPointRecord>
@@ -165,31 +130,18 @@ namespace NitscheContact
       return b < contact_id ? b : b + 2;
     }
 
-    /// For the finite-difference checks (tests/unit/model_consistency):
-    /// the current iterate U (may be modified; assemble() evaluates at it;
-    /// constrained entries must satisfy the constraints), -R(U) of the last
-    /// assemble() (zero on constrained rows), and y = K x with the matrix
-    /// of the last assemble(scheme, true).
-    dealii::TrilinosWrappers::MPI::Vector &
-    iterate()
-    {
-      return solution;
-    }
+    // ----- for tests (ModelBase; the iterate's constrained entries must
+    // satisfy the constraints)
     const dealii::TrilinosWrappers::MPI::Vector &
-    negative_residual() const
+    negative_residual() const override
     {
       return residual;
     }
     void
     jacobian_vmult(dealii::TrilinosWrappers::MPI::Vector       &y,
-                   const dealii::TrilinosWrappers::MPI::Vector &x) const
+                   const dealii::TrilinosWrappers::MPI::Vector &x) const override
     {
       system_matrix.vmult(y, x);
-    }
-    const dealii::AffineConstraints<double> &
-    get_constraints() const
-    {
-      return constraints;
     }
     /// For tests: the DoF handler of the current mesh (to interpolate
     /// prescribed fields into iterate()).
@@ -270,7 +222,21 @@ namespace NitscheContact
     warn_below_coercivity_bound() const;
     /// sqrt(v.Av) with the stiffness A, without the constrained entries
     double
-    energy_norm(const dealii::TrilinosWrappers::MPI::Vector &v) const;
+    energy_norm(const dealii::TrilinosWrappers::MPI::Vector &v) const override;
+    ContactCounts
+    assemble_system(NonlinearScheme scheme,
+                    bool            with_matrix,
+                    double         &contact_energy) override;
+    double
+    bulk_energy() const override;
+    unsigned int
+    solve_newton_system() override;
+    /// the ghosted copy follows U
+    void
+    iterate_changed() override
+    {
+      ghosted = solution;
+    }
 
     // --- Mesh, DoFs and constraints (mesh.cc)
 
@@ -324,7 +290,6 @@ namespace NitscheContact
     dealii::DoFHandler<3>                           dof_handler;
     dealii::MappingQ<3>                             mapping;
     dealii::IndexSet                                locally_owned, locally_relevant;
-    dealii::AffineConstraints<double>               constraints;
 
 
     // --- Assembly (assembly.cc)
@@ -389,14 +354,14 @@ namespace NitscheContact
                      std::vector<dealii::Tensor<1, 3>> &qs,
                      ContactCounts              &counts,
                      double                     &contact_energy);
-    /// The point counts of `status` (summed over the ranks), the status
-    /// changes against the previous matrix, which status and q it keeps
-    /// (with_matrix).
+    /// The point counts of `point_status` (summed over the ranks), the
+    /// status changes against the previous matrix; with_matrix the status
+    /// and q become the reference.
     void
-    count_contact_points(const std::vector<unsigned char> &status,
+    count_contact_points(std::vector<unsigned char>        &point_status,
                          std::vector<dealii::Tensor<1, 3>> &qs,
-                         bool                              with_matrix,
-                         ContactCounts                    &counts);
+                         bool                               with_matrix,
+                         ContactCounts                     &counts);
     /// work(cell, f, r) for every contact face f of the locally owned
     /// cells, after fvf.reinit(cell, f); r is the face's Nitsche parameter.
     template <typename FaceWork>
@@ -434,9 +399,6 @@ namespace NitscheContact
     dealii::TrilinosWrappers::SparseMatrix system_matrix; // bulk + contact
     dealii::TrilinosWrappers::MPI::Vector  load;          // condensed load
     dealii::TrilinosWrappers::MPI::Vector  residual;      // -R(U)
-    dealii::TrilinosWrappers::MPI::Vector  solution;      // U (owned)
-    dealii::TrilinosWrappers::MPI::Vector  base;          // U at last solve
-    dealii::TrilinosWrappers::MPI::Vector  increment;     // dU
     dealii::TrilinosWrappers::MPI::Vector  ghosted;       // U with ghosts
 
     ObstacleSurface                                obstacle;
@@ -458,7 +420,6 @@ namespace NitscheContact
     double              line_constant = 0., line_linear = 0.;
     std::vector<double> line_switching;
 
-    std::vector<unsigned char> previous_status;
     /// q = sigma_t - r s_t of every contact point at the last assembly
     /// with a matrix ('Stick step on slip reversal'; empty without)
     std::vector<dealii::Tensor<1, 3>> previous_q;
@@ -466,7 +427,6 @@ namespace NitscheContact
     /// the step solves K dU = residual + step_correction
     dealii::TrilinosWrappers::MPI::Vector step_correction;
     unsigned long last_reversed = 0; ///< such points at the last matrix
-    double                     load_factor = 1.;
     /// F in use: 'Contact/Friction coefficient' times the scale of the
     /// driver's friction continuation
     double                     friction = 0.;
@@ -474,7 +434,6 @@ namespace NitscheContact
     double                     kappa = 0.;
     /// friction switched on or off since theta_matrix was built
     bool                       theta_matrix_stale = false;
-    double                     last_contact_energy = 0.;
 
     // --- Linear solvers (linear_solver.cc)
 

@@ -38,6 +38,7 @@
 #include <nitsche_contact/models/common/model_tools.h>
 #include <nitsche_contact/fe/fe_bicubic_hermite.h>
 #include <nitsche_contact/model.h>
+#include <nitsche_contact/models/common/model_base.h>
 #include <nitsche_contact/models/common/postprocessing_tools.h>
 #include <nitsche_contact/solvers/hermite_multigrid.h>
 #include <nitsche_contact/parameters.h>
@@ -48,11 +49,8 @@
 
 namespace NitscheContact
 {
-  class KirchhoffModel : public ContactModel,
-                         public PotentialEnergy,
+  class KirchhoffModel : public ModelBase<dealii::Vector<double>>,
                          public FastLineSlope,
-                         public SolveAccuracy,
-                         public RigidMotionScale,
                          public ResidualScale
   {
   public:
@@ -96,12 +94,6 @@ namespace NitscheContact
     n_dofs() const;
     double
     mesh_size() const;
-    void
-    set_load_factor(double factor) override
-    {
-      load_factor     = factor;
-      trial.valid     = false;
-    }
     double
     load_norm() const override
     {
@@ -112,33 +104,11 @@ namespace NitscheContact
     {
       return load_factor * (unit_load * solution);
     }
-    void
-    apply_increment(double step) override;
-    double
-    increment_l2_relative() const override
-    {
-      return relative_l2(increment, solution);
-    }
-    EnergyNorms
-    energy_norms() const override
-    {
-      return {increment_energy_norm(), solution_energy_norm()};
-    }
-    double
-    increment_energy_norm() const;
-    double
-    solution_energy_norm() const;
 
-    // ----- assembly, energy and line slope (assembly.cc)
+    // ----- energy and line slope (assembly.cc)
 
-    ContactCounts
-    assemble(NonlinearScheme scheme, bool with_matrix) override;
     bool
     has_energy() const override;
-    double
-    energy() const override;
-    double
-    energy_slope() const override;
     void
     prepare_line_slope() override;
     double
@@ -146,8 +116,6 @@ namespace NitscheContact
 
     // ----- the linear solver (linear_solver.cc)
 
-    unsigned int
-    solve_linear() override;
     bool
     last_solve_accurate() const override
     {
@@ -174,38 +142,42 @@ namespace NitscheContact
     write_graphical_output(const std::string &directory,
                            unsigned int       cycle) const override;
 
-    // ----- for tests
+    // ----- for tests (ModelBase)
 
-    /// For tests (finite-difference checks of the Jacobian and of the
-    /// energy): the current iterate U (may be modified; constrained
-    /// entries must stay zero), -R(U) of the last assemble() (zero on
-    /// constrained rows), and y = K x with the matrix of the last
-    /// assemble(scheme, true).
-    dealii::Vector<double> &
-    iterate()
-    {
-      trial.valid = false;
-      return solution;
-    }
     const dealii::Vector<double> &
-    negative_residual() const
+    negative_residual() const override
     {
       return rhs;
     }
     void
-    jacobian_vmult(dealii::Vector<double> &y,
-                   const dealii::Vector<double> &x) const;
+    jacobian_vmult(dealii::Vector<double>       &y,
+                   const dealii::Vector<double> &x) const override;
     /// 'Linear solver/Type = multigrid': bring the multigrid to the contact
     /// status of the last assembled matrix (and check it if asked).
     void
     update_multigrid() const;
-    const dealii::AffineConstraints<double> &
-    get_constraints() const
-    {
-      return constraints;
-    }
 
   private:
+    // ----- assembly (assembly.cc) and the linear solve (linear_solver.cc)
+
+    ContactCounts
+    assemble_system(NonlinearScheme scheme,
+                    bool            with_matrix,
+                    double         &contact_energy) override;
+    /// The residual and the status of the last evaluate_residual() are
+    /// those of the current state: only the matrix is built.
+    bool
+    reuses_residual() const override
+    {
+      return true;
+    }
+    ContactCounts
+    assemble_matrix_at_last_residual(NonlinearScheme scheme) override;
+    double
+    bulk_energy() const override;
+    unsigned int
+    solve_newton_system() override;
+
     /// Everything that is the same on every cell of the uniform mesh:
     /// shape data at the quadrature points, the bending matrix, and the
     /// contact Jacobian of one quadrature point in the inactive and the
@@ -338,7 +310,7 @@ namespace NitscheContact
     static double
     energy_density(const PointInput &in, const PointState &st);
     double
-    energy_norm(const dealii::Vector<double> &v) const;
+    energy_norm(const dealii::Vector<double> &v) const override;
     /// unit_load and unit_load_norm: F at load factor 1.
     void
     assemble_unit_load();
@@ -430,7 +402,6 @@ namespace NitscheContact
     ObstacleSurface                            obstacle;
     bool    load_is_constant = true, psi_is_constant = true;
     double  load_constant = 0., psi_constant = 0.;
-    double  load_factor = 1.; ///< load stepping (set_load_factor)
     std::vector<double> load_values, psi_values; ///< per (cell, q)
     double unit_load_norm = 0.; ///< |F| at load factor 1 (setup_dofs)
     dealii::Vector<double> unit_load; ///< F at load factor 1 (setup_dofs)
@@ -440,7 +411,6 @@ namespace NitscheContact
     FE_BicubicHermite<2>           fe;
     dealii::DoFHandler<2>          dof_handler;
     dealii::MappingCartesian<2>    mapping;
-    dealii::AffineConstraints<double> constraints;
     dealii::QGauss<2>              quadrature;
     unsigned int nx = 0, ny = 0; ///< cells per direction of the grid
     /// the grid's box: the rectangle, or the bounding box of a mesh file
@@ -464,8 +434,7 @@ namespace NitscheContact
     /// the GSV term's shift of the contact condition was reported
     bool shift_warned = false;
 
-    // ----- the iterate and the linear system
-    dealii::Vector<double> solution, base, increment;
+    // ----- the linear system
     dealii::Vector<double>                 rhs; ///< -R(U), condensed
     dealii::TrilinosWrappers::SparseMatrix system_matrix;
     /// The part of the Jacobian that does not depend on the contact status:
@@ -481,30 +450,15 @@ namespace NitscheContact
     std::unique_ptr<ReusedFactorization> factorization;
     /// 'Type = multigrid'
     std::unique_ptr<HermiteMultigrid> multigrid;
-    /// whether the last assemble(.., true) saw no status change
-    bool status_settled = false;
 
     // ----- assembly state
-    std::vector<unsigned char>             previous_status;
-    /// work arrays of assemble(): per cell the 16 entries of -R and the
-    /// contact energy, per point the status just computed
+    /// work arrays of assemble_system(): per cell the 16 entries of -R and
+    /// the contact energy, per point the status just computed
     std::vector<double>        cell_residuals, cell_energies;
     std::vector<unsigned char> point_status;
-    /// What assemble(scheme, false) computed at the current iterate (the
-    /// driver's line search evaluates the residual at U + step dU, and the
-    /// next Newton iteration assembles at the same point): the status of
-    /// every contact point and the counts. assemble(scheme, true) at the
-    /// same iterate then only builds the matrix (the rhs is still the one
-    /// computed). Invalidated by every change of the iterate or the load.
-    struct TrialEvaluation
-    {
-      bool                       valid = false;
-      NonlinearScheme            scheme;
-      ContactCounts              counts;
-      std::vector<unsigned char> status;
-    } trial;
-    /// Contact part of energy() at the iterate of the last assemble().
-    double last_contact_energy = 0.;
+    /// the counts of the last evaluate_residual(), whose status is in
+    /// point_status (assemble_matrix_at_last_residual())
+    ContactCounts              residual_counts;
     /// prepare_line_search(): phi'(t) = line_constant + t line_linear +
     /// sum over the points whose contact state changes in (0, 1) of
     /// -coefficient * min(s0 + t ds, 0), stored as (s0, ds, coefficient)

@@ -36,6 +36,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <nitsche_contact/model.h>
+#include <nitsche_contact/models/common/model_base.h>
 #include <nitsche_contact/models/common/postprocessing_tools.h>
 #include <nitsche_contact/parameters.h>
 #include <nitsche_contact/solvers/reused_factorization.h>
@@ -45,10 +46,7 @@
 
 namespace NitscheContact
 {
-  class MembraneModel : public ContactModel,
-                        public PotentialEnergy,
-                        public SolveAccuracy,
-                        public RigidMotionScale,
+  class MembraneModel : public ModelBase<dealii::Vector<double>>,
                         public ResidualScale
   {
   public:
@@ -68,22 +66,6 @@ namespace NitscheContact
     setup_cycle(unsigned int cycle) override;
     ProblemSize
     problem_size() const override;
-    void
-    set_load_factor(double factor) override
-    {
-      load_factor = factor;
-    }
-    ContactCounts
-    assemble(NonlinearScheme scheme, bool with_matrix) override;
-    unsigned int
-    solve_linear() override;
-    void
-    apply_increment(double step) override;
-    EnergyNorms
-    energy_norms() const override
-    {
-      return {energy_norm(increment), energy_norm(solution)};
-    }
     CycleResults
     postprocess(const std::vector<dealii::Point<2>> &probes) override;
     std::vector<ContactPointRecord>
@@ -97,28 +79,17 @@ namespace NitscheContact
     write_graphical_output(const std::string &directory,
                            unsigned int       cycle) const override;
 
-    // ----- abilities (assembly.cc)
-
     /// theta = 1: the GSV terms are the gradient of a contact energy.
     bool
     has_energy() const override
     {
       return prm.theta == 1.;
     }
-    double
-    energy() const override;
-    double
-    energy_slope() const override;
     /// The sparse direct solver is exact up to round-off.
     bool
     last_solve_accurate() const override
     {
       return true;
-    }
-    std::optional<double>
-    estimated_correction() const override
-    {
-      return std::nullopt;
     }
     double
     load_work() const override
@@ -126,41 +97,21 @@ namespace NitscheContact
       return load_factor * (unit_load * solution);
     }
     double
-    increment_l2_relative() const override
-    {
-      return relative_l2(increment, solution);
-    }
-    double
     load_norm() const override
     {
       return std::abs(load_factor) * unit_load.l2_norm();
     }
 
-    // ----- for tests (finite-difference checks of the Jacobian and of the
-    // energy): the iterate U (constrained entries must stay zero), -R(U)
-    // of the last assemble() (zero on constrained rows), y = K x with the
-    // matrix of the last assemble(scheme, true), the constraints
-
-    dealii::Vector<double> &
-    iterate()
-    {
-      return solution;
-    }
     const dealii::Vector<double> &
-    negative_residual() const
+    negative_residual() const override
     {
       return rhs;
     }
     void
     jacobian_vmult(dealii::Vector<double>       &y,
-                   const dealii::Vector<double> &x) const
+                   const dealii::Vector<double> &x) const override
     {
       system_matrix.vmult(y, x);
-    }
-    const dealii::AffineConstraints<double> &
-    get_constraints() const
-    {
-      return constraints;
     }
 
   private:
@@ -197,6 +148,15 @@ namespace NitscheContact
 
     // ----- assembly (assembly.cc)
 
+    ContactCounts
+    assemble_system(NonlinearScheme scheme,
+                    bool            with_matrix,
+                    double         &contact_energy) override;
+    double
+    bulk_energy() const override;
+    unsigned int
+    solve_newton_system() override;
+
     /// The kernel's input at contact point q of cell c (active index) for
     /// the deflection w and Laplacian Delta w there.
     PointInput
@@ -210,7 +170,7 @@ namespace NitscheContact
                       std::vector<PointInput>     &inputs) const;
     /// T |grad v|^2 integrated: the energy norm.
     double
-    energy_norm(const dealii::Vector<double> &v) const;
+    energy_norm(const dealii::Vector<double> &v) const override;
     /// The GSV inverse constant C_I of h_K^2 |Delta v|^2_K <= C_I
     /// |grad v|^2_K on the first cell, the left side with the contact
     /// quadrature (0 for Q1 on parallelograms).
@@ -248,7 +208,6 @@ namespace NitscheContact
     dealii::DoFHandler<2>             dof_handler;
     /// of the element's degree, so that curved boundaries converge with it
     std::unique_ptr<dealii::MappingQ<2>> mapping;
-    dealii::AffineConstraints<double> constraints;
     dealii::Quadrature<2>             bulk_quadrature;
     dealii::Quadrature<2>             contact_quadrature;
 
@@ -261,19 +220,11 @@ namespace NitscheContact
     double              inverse_constant = 0.; ///< C_I of the first cell
     bool                coercivity_warned = false;
 
-    // ----- the iterate and the linear system
-    double                                 load_factor = 1.;
-    dealii::Vector<double>                 solution, base, increment;
+    // ----- the linear system
     dealii::Vector<double>                 rhs;       ///< -R(U), condensed
     dealii::Vector<double>                 unit_load; ///< F at factor 1
     dealii::TrilinosWrappers::SparseMatrix system_matrix;
     ReusedFactorization                    factorization;
-    /// per contact point: in contact (1) or not (0) at the last assemble
-    /// with matrix (255 before the first), the reference of n_changed
-    std::vector<unsigned char> previous_status;
-    bool                       status_settled = false;
-    /// contact part of energy() at the iterate of the last assemble()
-    double last_contact_energy = 0.;
   };
 } // namespace NitscheContact
 

@@ -34,6 +34,7 @@
 
 #include <nitsche_contact/models/common/model_tools.h>
 #include <nitsche_contact/model.h>
+#include <nitsche_contact/models/common/model_base.h>
 #include <nitsche_contact/models/common/postprocessing_tools.h>
 #include <nitsche_contact/parameters.h>
 #include <nitsche_contact/solvers/hermite_multigrid.h>
@@ -65,10 +66,7 @@ namespace NitscheContact
    *
    * The model runs on one MPI process (direct solver on a serial mesh).
    */
-  class MindlinModel : public ContactModel,
-                       public PotentialEnergy,
-                       public SolveAccuracy,
-                       public RigidMotionScale,
+  class MindlinModel : public ModelBase<dealii::Vector<double>>,
                        public FrictionContinuation
   {
   public:
@@ -89,11 +87,6 @@ namespace NitscheContact
     {
       return {n_dofs(), mesh_size()};
     }
-    EnergyNorms
-    energy_norms() const override
-    {
-      return {increment_energy_norm(), solution_energy_norm()};
-    }
     std::vector<std::pair<std::string, std::string>>
     description() const;
     void
@@ -102,17 +95,6 @@ namespace NitscheContact
     n_dofs() const;
     double
     mesh_size() const;
-    ContactCounts
-    assemble(NonlinearScheme scheme, bool with_matrix) override;
-    unsigned int
-    solve_linear() override;
-    void
-    apply_increment(double step) override;
-    void
-    set_load_factor(double factor) override
-    {
-      load_factor = factor;
-    }
     void
     set_friction_scale(double scale) override;
     /// theta = 1 and no friction in use: the residual is the gradient of J
@@ -121,10 +103,6 @@ namespace NitscheContact
     {
       return prm.theta == 1. && friction == 0.;
     }
-    double
-    energy() const override;
-    double
-    energy_slope() const override;
     double
     load_work() const override
     {
@@ -140,15 +118,6 @@ namespace NitscheContact
     }
     std::optional<double>
     estimated_correction() const override;
-    double
-    increment_l2_relative() const override
-    {
-      return relative_l2(increment, solution);
-    }
-    double
-    increment_energy_norm() const;
-    double
-    solution_energy_norm() const;
     CycleResults
     postprocess(const std::vector<dealii::Point<2>> &probes) override;
     std::vector<ContactPointRecord>
@@ -162,29 +131,15 @@ namespace NitscheContact
     write_graphical_output(const std::string &directory,
                            unsigned int       cycle) const override;
 
-    /// For tests (finite-difference checks of the Jacobian and of the
-    /// energy): the current iterate U (may be modified; constrained
-    /// entries must stay zero), -R(U) of the last assemble() (zero on
-    /// constrained rows), and y = K x with the matrix of the last
-    /// assemble(scheme, true).
-    dealii::Vector<double> &
-    iterate()
-    {
-      return solution;
-    }
+    // ----- for tests (ModelBase)
     const dealii::Vector<double> &
-    negative_residual() const
+    negative_residual() const override
     {
       return residual;
     }
     void
-    jacobian_vmult(dealii::Vector<double> &y,
-                   const dealii::Vector<double> &x) const;
-    const dealii::AffineConstraints<double> &
-    get_constraints() const
-    {
-      return constraints;
-    }
+    jacobian_vmult(dealii::Vector<double>       &y,
+                   const dealii::Vector<double> &x) const override;
     const dealii::DoFHandler<2> &
     get_dof_handler() const
     {
@@ -314,7 +269,15 @@ namespace NitscheContact
     void
     setup_dofs();
     double
-    energy_norm(const dealii::Vector<double> &v) const;
+    energy_norm(const dealii::Vector<double> &v) const override;
+    ContactCounts
+    assemble_system(NonlinearScheme scheme,
+                    bool            with_matrix,
+                    double         &contact_energy) override;
+    double
+    bulk_energy() const override;
+    unsigned int
+    solve_newton_system() override;
 
     // The element data (elements.cc).
     /// What the assembly needs of one cell.
@@ -514,7 +477,6 @@ namespace NitscheContact
     std::vector<std::array<std::vector<double>, 2>> bulk_weights,
       contact_weights;
     dealii::DoFHandler<2>    dof_handler;
-    dealii::AffineConstraints<double> constraints;
 
     /// every cell is the same hx x hy rectangle (the Cartesian shapes)
     bool         uniform_cells = true;
@@ -571,15 +533,11 @@ namespace NitscheContact
     dealii::Vector<double>                 residual;  // -R(U), condensed
     /// per cell: -(its residual), its contact energy (assemble())
     std::vector<double> cell_residuals, cell_energies;
-    dealii::Vector<double>                 solution;  // U
-    dealii::Vector<double>                 base;      // U at last solve
-    dealii::Vector<double>                 increment; // dU
 
     ObstacleSurface                            obstacle;
     std::unique_ptr<TransverseLoad> transverse_load;
     std::unique_ptr<dealii::FunctionParser<2>> exact_solution;
 
-    std::vector<unsigned char> previous_status;
     /// q = sigma_t - r s_t of every contact point at the last assembly
     /// with a matrix ('Stick step on slip reversal'; empty without), and
     /// -(R_branch - R) of the points whose step uses the stick branch: the
@@ -587,9 +545,6 @@ namespace NitscheContact
     std::vector<dealii::Tensor<1, 3>> previous_q;
     dealii::Vector<double>            step_correction;
     unsigned long                     last_reversed = 0;
-    /// Contact part of energy() at the iterate of the last assemble().
-    double last_contact_energy = 0.;
-    double                     load_factor = 1.; ///< load stepping
     /// F in use: 'Contact/Friction coefficient' times the scale of the
     /// driver's friction continuation (the membrane unknowns stay on)
     double                     friction = 0.;
