@@ -495,10 +495,6 @@ namespace NitscheContact
     Vector<double>     cell_residual(n);
     std::vector<types::global_dof_index> dofs(n);
     std::vector<ShapeContactData>        shapes(n);
-    std::vector<Vector<double>>          u_values(face_quadrature.size(),
-                                         Vector<double>(3));
-    std::vector<std::vector<Tensor<1, 3>>> u_grads(
-      face_quadrature.size(), std::vector<Tensor<1, 3>>(3));
     const double lambda = prm.lambda(), mu = prm.mu();
     std::vector<unsigned int> comp(n);
     for (unsigned int i = 0; i < n; ++i)
@@ -507,68 +503,65 @@ namespace NitscheContact
     const bool compare_q = track_q && previous_q.size() == status.bytes().size();
     Vector<double> cell_difference(n), point_law(n), point_branch(n);
     bool           cell_reversed = false;
-    for_each_contact_face(
-      fvf,
-      [&](const DoFHandler<3>::active_cell_iterator &cell,
-          const unsigned int /*f*/,
-          const double                               r) {
-        fvf.get_function_values(ghosted, u_values);
-        fvf.get_function_gradients(ghosted, u_grads);
-        bool any_active = false;
-        for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+    bool any_active = false;
+    visit_contact_points(
+      fvf, scheme,
+      [&](const DoFHandler<3>::active_cell_iterator &,
+          const unsigned int,
+          const unsigned int q,
+          const PointInput  &in,
+          const PointState  &st) {
+        const std::size_t k = point_status.size();
+        point_status.push_back(static_cast<unsigned char>(st.status));
+        if (track_q)
+          qs.push_back(st.q);
+        contact_energy += contact_energy_density(in, st) * fvf.JxW(q);
+        if (st.status == PointStatus::inactive)
+          return; // all in C
+        if (!any_active)
           {
-            const PointInput in =
-              face_point_input(fvf, q, u_values[q], u_grads[q], r);
-            const PointState st = evaluate_contact_point(in, scheme);
-            const std::size_t k = point_status.size();
-            point_status.push_back(static_cast<unsigned char>(st.status));
-            if (track_q)
-              qs.push_back(st.q);
-            contact_energy += contact_energy_density(in, st) * fvf.JxW(q);
-            if (st.status == PointStatus::inactive)
-              continue; // all in C
-            if (!any_active)
-              {
-                any_active      = true;
-                cell_matrix     = 0.;
-                cell_residual   = 0.;
-                cell_difference = 0.;
-                cell_reversed   = false;
-              }
-            shape_contact_data(fvf, q, comp, lambda, mu, shapes);
-            const bool reversed =
-              compare_q && k < previous_q.size() &&
-              slip_reversed(st, previous_q[k],
-                            status[k]);
-            if (reversed)
-              {
-                // the law's residual, the stick branch's matrix, and the
-                // difference of the two residuals for the step
-                ++counts.n_reversed;
-                cell_reversed = true;
-                point_law    = 0.;
-                point_branch = 0.;
-                add_point_contribution(in, st, shapes, fvf.JxW(q), nullptr,
-                                       point_law);
-                add_point_contribution(in, stick_branch(in, st), shapes,
-                                       fvf.JxW(q), &cell_matrix,
-                                       point_branch);
-                cell_residual += point_law;
-                point_branch -= point_law;
-                cell_difference += point_branch;
-              }
-            else
-              add_point_contribution(in, st, shapes, fvf.JxW(q),
-                                     with_matrix ? &cell_matrix : nullptr,
-                                     cell_residual);
-            if (prm.theta != 0.)
-              add_theta_terms(prm.theta / r, friction > 0., shapes,
-                              -fvf.JxW(q), &in,
-                              with_matrix ? &cell_matrix : nullptr,
-                              &cell_residual);
+            any_active      = true;
+            cell_matrix     = 0.;
+            cell_residual   = 0.;
+            cell_difference = 0.;
+            cell_reversed   = false;
           }
+        shape_contact_data(fvf, q, comp, lambda, mu, shapes);
+        const bool reversed =
+          compare_q && k < previous_q.size() &&
+          slip_reversed(st, previous_q[k],
+                        status[k]);
+        if (reversed)
+          {
+            // the law's residual, the stick branch's matrix, and the
+            // difference of the two residuals for the step
+            ++counts.n_reversed;
+            cell_reversed = true;
+            point_law    = 0.;
+            point_branch = 0.;
+            add_point_contribution(in, st, shapes, fvf.JxW(q), nullptr,
+                                   point_law);
+            add_point_contribution(in, stick_branch(in, st), shapes,
+                                   fvf.JxW(q), &cell_matrix,
+                                   point_branch);
+            cell_residual += point_law;
+            point_branch -= point_law;
+            cell_difference += point_branch;
+          }
+        else
+          add_point_contribution(in, st, shapes, fvf.JxW(q),
+                                 with_matrix ? &cell_matrix : nullptr,
+                                 cell_residual);
+        if (prm.theta != 0.)
+          add_theta_terms(prm.theta / in.r, friction > 0., shapes,
+                          -fvf.JxW(q), &in,
+                          with_matrix ? &cell_matrix : nullptr,
+                          &cell_residual);
+      },
+      [&](const DoFHandler<3>::active_cell_iterator &cell, const unsigned int) {
         if (!any_active)
           return;
+        any_active = false;
         cell->get_dof_indices(dofs);
         cell_residual *= -1.; // we assemble -R
         if (cell_reversed)

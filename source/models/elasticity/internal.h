@@ -85,17 +85,14 @@ namespace NitscheContact
             }
   }
 
-  template <typename PointWork>
+  template <typename PointWork, typename FaceEnd>
   void
-  ElasticityModel::for_each_contact_point(PointWork &&work) const
+  ElasticityModel::visit_contact_points(dealii::FEFaceValues<3> &fvf,
+                                        const NonlinearScheme    scheme,
+                                        PointWork              &&work,
+                                        FaceEnd                &&face_end) const
   {
-    dealii::FEFaceValues<3> fvf(mapping, fe, contact_face_quadrature,
-                                dealii::update_values |
-                                  dealii::update_gradients |
-                                  dealii::update_quadrature_points |
-                                  dealii::update_JxW_values |
-                                  dealii::update_normal_vectors);
-    const unsigned int nq = contact_face_quadrature.size();
+    const unsigned int nq = fvf.n_quadrature_points;
     std::vector<dealii::Vector<double>> u_values(nq,
                                                  dealii::Vector<double>(3));
     std::vector<std::vector<dealii::Tensor<1, 3>>> u_grads(
@@ -111,11 +108,33 @@ namespace NitscheContact
           {
             const PointInput in =
               face_point_input(fvf, q, u_values[q], u_grads[q], r);
-            work(cell, f, fvf.quadrature_point(q), in,
-                 evaluate_contact_point(in, NonlinearScheme::newton),
-                 fvf.JxW(q));
+            work(cell, f, q, in, evaluate_contact_point(in, scheme));
           }
+        face_end(cell, f);
       });
+  }
+
+  template <typename PointWork>
+  void
+  ElasticityModel::for_each_contact_point(PointWork &&work) const
+  {
+    dealii::FEFaceValues<3> fvf(mapping, fe, contact_face_quadrature,
+                                dealii::update_values |
+                                  dealii::update_gradients |
+                                  dealii::update_quadrature_points |
+                                  dealii::update_JxW_values |
+                                  dealii::update_normal_vectors);
+    visit_contact_points(
+      fvf, NonlinearScheme::newton,
+      [&](const dealii::DoFHandler<3>::active_cell_iterator &cell,
+          const unsigned int                                 f,
+          const unsigned int                                 q,
+          const PointInput                                  &in,
+          const PointState                                  &st) {
+        work(cell, f, fvf.quadrature_point(q), in, st, fvf.JxW(q));
+      },
+      [](const dealii::DoFHandler<3>::active_cell_iterator &,
+         const unsigned int) {});
   }
 } // namespace NitscheContact
 

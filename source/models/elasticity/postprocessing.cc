@@ -73,52 +73,35 @@ namespace NitscheContact
   ElasticityModel::add_contact_results(CycleResults &res) const
   {
     // Contact quantities at the quadrature points of the contact faces.
-    const Quadrature<2> &face_quadrature = contact_face_quadrature;
-    FEFaceValues<3> fvf(mapping, fe, face_quadrature,
-                        update_values | update_gradients |
-                          update_quadrature_points | update_JxW_values |
-                          update_normal_vectors);
-    std::vector<Vector<double>> u_values(face_quadrature.size(),
-                                         Vector<double>(3));
-    std::vector<std::vector<Tensor<1, 3>>> u_grads(
-      face_quadrature.size(), std::vector<Tensor<1, 3>>(3));
     ContactTotals totals;
     double        stick_area = 0., slip_area = 0., max_pressure = 0.,
            max_ratio = 0., tangential_force = 0.;
     Tensor<1, 3> tangential_resultant;
-    for_each_contact_face(
-      fvf,
-      [&](const DoFHandler<3>::active_cell_iterator &/*cell*/,
-          const unsigned int /*f*/,
-          const double                               r) {
-        fvf.get_function_values(ghosted, u_values);
-        fvf.get_function_gradients(ghosted, u_grads);
-        for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+    for_each_contact_point(
+      [&](const DoFHandler<3>::active_cell_iterator &,
+          const unsigned int,
+          const Point<3> &,
+          const PointInput &in,
+          const PointState &st,
+          const double      JxW) {
+        totals.add(in, st, JxW);
+        if (st.lambda_n < 0.)
           {
-            const PointInput in =
-              face_point_input(fvf, q, u_values[q], u_grads[q], r);
-            const PointState st =
-              evaluate_contact_point(in, NonlinearScheme::newton);
-            const double JxW = fvf.JxW(q);
-            totals.add(in, st, JxW);
-            if (st.lambda_n < 0.)
-              {
-                max_pressure = std::max(max_pressure, -st.lambda_n);
-                if (st.status == PointStatus::slip)
-                  slip_area += JxW;
-                else
-                  stick_area += JxW;
-                if (prm.friction > 0.)
-                  max_ratio =
-                    std::max(max_ratio,
-                             st.lambda_t.norm() / (prm.friction * -st.lambda_n));
-              }
-            // the obstacle acts on the body with the traction
-            // Lambda_n n + Lambda_t (the same keys and signs as the
-            // Mindlin model's)
-            tangential_force += st.lambda_t.norm() * JxW;
-            tangential_resultant += st.lambda_t * JxW;
+            max_pressure = std::max(max_pressure, -st.lambda_n);
+            if (st.status == PointStatus::slip)
+              slip_area += JxW;
+            else
+              stick_area += JxW;
+            if (prm.friction > 0.)
+              max_ratio =
+                std::max(max_ratio,
+                         st.lambda_t.norm() / (prm.friction * -st.lambda_n));
           }
+        // the obstacle acts on the body with the traction
+        // Lambda_n n + Lambda_t (the same keys and signs as the
+        // Mindlin model's)
+        tangential_force += st.lambda_t.norm() * JxW;
+        tangential_resultant += st.lambda_t * JxW;
       });
     const ContactTotals all = totals.summed_over(comm);
     res.contact_area        = all.area();

@@ -148,10 +148,10 @@ namespace NitscheContact
 
             // Contact terms through the generic kernel.
             double energy = 0.;
-            for (unsigned int q = 0; q < nq; ++q)
-              {
-                const PointInput in = point_input(c, q, u);
-                const PointState st = evaluate_contact_point(in, scheme);
+            visit_contact_points(
+              c, u, scheme,
+              [&](const unsigned int q, const PointInput &in,
+                  const PointState &st) {
                 add_frictionless_point_residual(in, st,
                                                 &kit.u_n_rows[16 * q],
                                                 &kit.sigma_n_rows[16 * q],
@@ -162,7 +162,7 @@ namespace NitscheContact
                 point_status[c * nq + q] = static_cast<unsigned char>(
                   st.status != PointStatus::inactive ? PointStatus::stick :
                                                        PointStatus::inactive);
-              }
+              });
             cell_energies[c] = energy;
             // the right-hand side is -R(U)
             for (unsigned int i = 0; i < 16; ++i)

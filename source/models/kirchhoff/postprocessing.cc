@@ -85,12 +85,11 @@ namespace NitscheContact
     double u[16];
     cell_coefficients(solution, c, u);
     CellContactMeans means;
-    for (unsigned int q = 0; q < quadrature.size(); ++q)
-      {
-        const PointInput in = point_input(c, q, u);
-        means.add(in, evaluate_contact_point(in, NonlinearScheme::newton),
-                  kit.JxW[q]);
-      }
+    visit_contact_points(
+      c, u, NonlinearScheme::newton,
+      [&](const unsigned int q, const PointInput &in, const PointState &st) {
+        means.add(in, st, kit.JxW[q]);
+      });
     return means;
   }
 
@@ -116,7 +115,6 @@ namespace NitscheContact
   std::vector<ContactPointRecord>
   KirchhoffModel::contact_points() const
   {
-    const unsigned int              nq = quadrature.size();
     std::vector<ContactPointRecord> points;
     double                          u[16];
     for (unsigned int c = 0; c < cells.size(); ++c)
@@ -125,15 +123,15 @@ namespace NitscheContact
         // axis-parallel rectangle: x = v0 + xi (v3 - v0)
         const Point<2> v0 = cells[c]->vertex(0), v3 = cells[c]->vertex(3),
                        centre = cells[c]->center();
-        for (unsigned int q = 0; q < nq; ++q)
-          {
-            const Point<2>  &xi = quadrature.point(q);
-            const PointInput in = point_input(c, q, u);
+        visit_contact_points(
+          c, u, NonlinearScheme::newton,
+          [&](const unsigned int q, const PointInput &in, const PointState &st) {
+            const Point<2> &xi = quadrature.point(q);
             points.push_back(make_contact_point_record(
-              in, evaluate_contact_point(in, NonlinearScheme::newton),
-              v0[0] + xi[0] * (v3[0] - v0[0]), v0[1] + xi[1] * (v3[1] - v0[1]),
-              centre[0], centre[1], kit.JxW[q]));
-          }
+              in, st, v0[0] + xi[0] * (v3[0] - v0[0]),
+              v0[1] + xi[1] * (v3[1] - v0[1]), centre[0], centre[1],
+              kit.JxW[q]));
+          });
       }
     return points;
   }
@@ -143,7 +141,6 @@ namespace NitscheContact
   CycleResults
   KirchhoffModel::postprocess(const std::vector<Point<2>> &probes)
   {
-    const unsigned int nq = quadrature.size();
     CycleResults       res;
     ContactTotals      totals;
     double             load_total      = 0.;
@@ -180,19 +177,17 @@ namespace NitscheContact
             res.min_deflection = std::min(res.min_deflection, w);
             res.max_deflection = std::max(res.max_deflection, w);
           }
-        for (unsigned int q = 0; q < nq; ++q)
-          {
+        visit_contact_points(
+          c, u, NonlinearScheme::newton,
+          [&](const unsigned int q, const PointInput &in, const PointState &st) {
             double w = 0.;
             for (unsigned int i = 0; i < 16; ++i)
               w += u[i] * kit.values(i, q);
             res.min_deflection = std::min(res.min_deflection, w);
             res.max_deflection = std::max(res.max_deflection, w);
-            const PointInput in = point_input(c, q, u);
-            const PointState st =
-              evaluate_contact_point(in, NonlinearScheme::newton);
             totals.add(in, st, kit.JxW[q]);
             load_total += load_at(c, q) * kit.JxW[q];
-          }
+          });
       }
     res.contact_area  = totals.area();
     res.contact_force = totals.force();

@@ -38,27 +38,6 @@ namespace NitscheContact
 
 
 
-  void
-  MembraneModel::cell_point_inputs(const FEValues<2>      &fe_values,
-                                   const unsigned int      c,
-                                   const Vector<double>   &u,
-                                   std::vector<PointInput> &inputs) const
-  {
-    inputs.resize(contact_quadrature.size());
-    for (unsigned int q = 0; q < contact_quadrature.size(); ++q)
-      {
-        double w = 0., laplacian = 0.;
-        for (unsigned int i = 0; i < fe->n_dofs_per_cell(); ++i)
-          {
-            w += u(i) * fe_values.shape_value(i, q);
-            laplacian += u(i) * trace(fe_values.shape_hessian(i, q));
-          }
-        inputs[q] = point_input(c, q, w, laplacian);
-      }
-  }
-
-
-
   ContactCounts
   MembraneModel::assemble_system(const NonlinearScheme scheme,
                                  const bool            with_matrix,
@@ -75,7 +54,6 @@ namespace NitscheContact
     Vector<double>                       cell_residual(n), u(n);
     std::vector<types::global_dof_index> dofs(n);
     std::vector<ShapeContactData>        shapes(n);
-    std::vector<PointInput>              inputs;
     std::vector<unsigned char> point_status(triangulation.n_active_cells() *
                                             nc);
 
@@ -114,25 +92,22 @@ namespace NitscheContact
 
         // contact: the shared kernel with d u_n = -N_i, d sigma_n = T Delta
         // N_i
-        contact.reinit(cell);
-        cell_point_inputs(contact, c, u, inputs);
-        for (unsigned int q = 0; q < nc; ++q)
-          {
+        visit_contact_points(
+          cell, contact, scheme,
+          [&](const unsigned int q, const PointInput &in, const PointState &st) {
             for (unsigned int i = 0; i < n; ++i)
               {
                 shapes[i].u_n     = -contact.shape_value(i, q);
                 shapes[i].sigma_n = tension * trace(contact.shape_hessian(i, q));
               }
-            const PointState st = evaluate_contact_point(inputs[q], scheme);
-            add_point_contribution(inputs[q], st, shapes, contact.JxW(q),
+            add_point_contribution(in, st, shapes, contact.JxW(q),
                                    with_matrix ? &cell_matrix : nullptr,
                                    cell_residual);
             if (has_energy())
-              contact_energy +=
-                contact_energy_density(inputs[q], st) * contact.JxW(q);
+              contact_energy += contact_energy_density(in, st) * contact.JxW(q);
             point_status[std::size_t(c) * nc + q] =
               static_cast<unsigned char>(st.status);
-          }
+          });
 
         // the right-hand side is -R(U)
         cell_residual *= -1.;

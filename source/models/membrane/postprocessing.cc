@@ -91,16 +91,12 @@ namespace NitscheContact
     const DoFHandler<2>::active_cell_iterator &cell,
     FEValues<2>                               &contact) const
   {
-    Vector<double>          u(fe->n_dofs_per_cell());
-    std::vector<PointInput> inputs;
-    contact.reinit(cell);
-    cell->get_dof_values(solution, u);
-    cell_point_inputs(contact, cell->active_cell_index(), u, inputs);
     CellContactMeans means;
-    for (unsigned int q = 0; q < contact_quadrature.size(); ++q)
-      means.add(inputs[q],
-                evaluate_contact_point(inputs[q], NonlinearScheme::newton),
-                contact.JxW(q));
+    visit_contact_points(
+      cell, contact, NonlinearScheme::newton,
+      [&](const unsigned int q, const PointInput &in, const PointState &st) {
+        means.add(in, st, contact.JxW(q));
+      });
     return means;
   }
 
@@ -138,22 +134,17 @@ namespace NitscheContact
     FEValues<2> contact(*mapping, *fe, contact_quadrature,
                         update_values | update_hessians |
                           update_quadrature_points | update_JxW_values);
-    Vector<double>                  u(fe->n_dofs_per_cell());
-    std::vector<PointInput>         inputs;
     std::vector<ContactPointRecord> points;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
-        contact.reinit(cell);
-        cell->get_dof_values(solution, u);
-        cell_point_inputs(contact, cell->active_cell_index(), u, inputs);
         const Point<2> centre = cell->center();
-        for (unsigned int q = 0; q < contact_quadrature.size(); ++q)
-          {
+        visit_contact_points(
+          cell, contact, NonlinearScheme::newton,
+          [&](const unsigned int q, const PointInput &in, const PointState &st) {
             const Point<2> &x = contact.quadrature_point(q);
             points.push_back(make_contact_point_record(
-              inputs[q], evaluate_contact_point(inputs[q], NonlinearScheme::newton),
-              x[0], x[1], centre[0], centre[1], contact.JxW(q)));
-          }
+              in, st, x[0], x[1], centre[0], centre[1], contact.JxW(q)));
+          });
       }
     return points;
   }
@@ -171,22 +162,14 @@ namespace NitscheContact
     res.max_deflection = *std::max_element(solution.begin(), solution.end());
     FEValues<2> contact(*mapping, *fe, contact_quadrature,
                         update_values | update_hessians | update_JxW_values);
-    Vector<double>          u(fe->n_dofs_per_cell());
-    std::vector<PointInput> inputs;
     for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        contact.reinit(cell);
-        cell->get_dof_values(solution, u);
-        cell_point_inputs(contact, cell->active_cell_index(), u, inputs);
-        for (unsigned int q = 0; q < contact_quadrature.size(); ++q)
-          {
-            res.min_deflection = std::min(res.min_deflection, -inputs[q].u_n);
-            res.max_deflection = std::max(res.max_deflection, -inputs[q].u_n);
-            totals.add(inputs[q],
-                       evaluate_contact_point(inputs[q], NonlinearScheme::newton),
-                       contact.JxW(q));
-          }
-      }
+      visit_contact_points(
+        cell, contact, NonlinearScheme::newton,
+        [&](const unsigned int q, const PointInput &in, const PointState &st) {
+          res.min_deflection = std::min(res.min_deflection, -in.u_n);
+          res.max_deflection = std::max(res.max_deflection, -in.u_n);
+          totals.add(in, st, contact.JxW(q));
+        });
     res.contact_area  = totals.area();
     res.contact_force = totals.force();
     totals.report_compliance(kappa, res);

@@ -199,18 +199,17 @@ namespace NitscheContact
       scratch.residual = 0.;
     bool   any_active = false;
     double energy     = 0.;
-    for (unsigned int q = 0; q < nq; ++q)
-      {
-        const std::size_t k  = c * nq + q;
-        const PointInput  in = point_input(d, scratch.u, q, gaps[k]);
-        const PointState  st = evaluate_contact_point(in, pass.scheme);
+    visit_contact_points(
+      d, c, scratch.u, pass.scheme,
+      [&](const unsigned int q, const std::size_t k, const PointInput &in,
+          const PointState &st) {
         pass.status[k]       = static_cast<unsigned char>(st.status);
         if (pass.track_q)
           pass.qs[k] = st.q;
         if (pass.with_energy)
           energy += contact_energy_density(in, st) * d.contact_JxW[q];
         if (st.status == PointStatus::inactive)
-          continue;
+          return;
         if (!any_active && matrix)
           *matrix = 0.;
         any_active = true;
@@ -253,7 +252,7 @@ namespace NitscheContact
         scratch.residual -= scratch.tmp;
         if (matrix)
           matrix->add(-1., *theta);
-      }
+      });
     cell_energies[c] = energy;
     for (unsigned int i = 0; i < n; ++i)
       cell_residuals[n * c + i] = -scratch.residual(i);

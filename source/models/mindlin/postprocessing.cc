@@ -119,7 +119,6 @@ namespace NitscheContact
   MindlinModel::contact_statistics() const
   {
     const unsigned int n  = fe.n_dofs_per_cell();
-    const unsigned int nq = contact_quadrature.size();
     std::vector<types::global_dof_index> dofs(n);
     Vector<double>                       u(n);
     ContactStatistics                    s;
@@ -132,12 +131,10 @@ namespace NitscheContact
         cell->get_dof_indices(dofs);
         for (unsigned int i = 0; i < n; ++i)
           u(i) = solution(dofs[i]);
-        for (unsigned int q = 0; q < nq; ++q)
-          {
-            const std::size_t k  = static_cast<std::size_t>(c) * nq + q;
-            const PointInput  in = point_input(d, u, q, gaps[k]);
-            const PointState  st =
-              evaluate_contact_point(in, NonlinearScheme::newton);
+        visit_contact_points(
+          d, c, u, NonlinearScheme::newton,
+          [&](const unsigned int q, std::size_t, const PointInput &in,
+              const PointState &st) {
             const double JxW = d.contact_JxW[q];
             s.max_slip         = std::max(s.max_slip, in.slip.norm());
             if (settings.membrane)
@@ -171,7 +168,7 @@ namespace NitscheContact
                                  (friction * (-st.lambda_n)));
                   }
               }
-          }
+          });
       }
     s.area         = totals.area();
     s.force        = totals.force();
@@ -247,7 +244,6 @@ namespace NitscheContact
                                    ElementScratch    &scratch) const
   {
     const unsigned int                   n  = fe.n_dofs_per_cell();
-    const unsigned int                   nq = contact_quadrature.size();
     std::vector<types::global_dof_index> dofs(n);
     Vector<double>                       u(n);
     cell_grid[c]->get_dof_indices(dofs);
@@ -255,13 +251,10 @@ namespace NitscheContact
       u(i) = solution(dofs[i]);
     const ElementData &d = element_data(c, scratch, false);
     CellContactMeans   means;
-    for (unsigned int q = 0; q < nq; ++q)
-      {
-        const PointInput in =
-          point_input(d, u, q, gaps[static_cast<std::size_t>(c) * nq + q]);
-        means.add(in, evaluate_contact_point(in, NonlinearScheme::newton),
-                  d.contact_JxW[q]);
-      }
+    visit_contact_points(
+      d, c, u, NonlinearScheme::newton,
+      [&](const unsigned int q, std::size_t, const PointInput &in,
+          const PointState &st) { means.add(in, st, d.contact_JxW[q]); });
     return means;
   }
 
@@ -444,7 +437,6 @@ namespace NitscheContact
   MindlinModel::contact_points() const
   {
     const unsigned int n  = fe.n_dofs_per_cell();
-    const unsigned int nq = contact_quadrature.size();
     std::vector<types::global_dof_index> dofs(n);
     Vector<double>                       u(n);
     std::vector<ContactPointRecord>      points;
@@ -460,15 +452,14 @@ namespace NitscheContact
           u(i) = solution(dofs[i]);
         positions.reinit(cell);
         const Point<2> centre = cell->center();
-        for (unsigned int q = 0; q < nq; ++q)
-          {
-            const Point<2>  &x = positions.quadrature_point(q);
-            const PointInput in =
-              point_input(d, u, q, gaps[static_cast<std::size_t>(c) * nq + q]);
+        visit_contact_points(
+          d, c, u, NonlinearScheme::newton,
+          [&](const unsigned int q, std::size_t, const PointInput &in,
+              const PointState &st) {
+            const Point<2> &x = positions.quadrature_point(q);
             points.push_back(make_contact_point_record(
-              in, evaluate_contact_point(in, NonlinearScheme::newton),
-              x[0], x[1], centre[0], centre[1], d.contact_JxW[q]));
-          }
+              in, st, x[0], x[1], centre[0], centre[1], d.contact_JxW[q]));
+          });
       }
     return points;
   }

@@ -367,9 +367,21 @@ namespace NitscheContact
     template <typename FaceWork>
     void
     for_each_contact_face(dealii::FEFaceValues<3> &fvf, FaceWork &&work) const;
+    /// Visits the contact points: for every contact face f of the locally
+    /// owned cells, after fvf.reinit(cell, f) (fvf: values, gradients,
+    /// quadrature points, JxW and normals), work(cell, f, q, in, state)
+    /// at each point q with the kernel's input and state at U, then
+    /// face_end(cell, f). Assembly, postprocessing, contact_points() and
+    /// contact_pressure_at() all walk the contact points through it.
+    template <typename PointWork, typename FaceEnd>
+    void
+    visit_contact_points(dealii::FEFaceValues<3> &fvf,
+                         NonlinearScheme          scheme,
+                         PointWork              &&work,
+                         FaceEnd                &&face_end) const;
     /// work(cell, f, x, in, state, JxW) for every contact quadrature point
-    /// of the locally owned cells at the current solution (x: the point,
-    /// in/state: the kernel's input and its evaluation, Newton scheme).
+    /// of the locally owned cells at U (x: the point; the Newton scheme):
+    /// visit_contact_points() with an FEFaceValues of its own.
     template <typename PointWork>
     void
     for_each_contact_point(PointWork &&work) const;

@@ -306,6 +306,23 @@ namespace NitscheContact
     /// Kernel input at quadrature point q of cell c for local values U_c.
     PointInput
     point_input(unsigned int c, unsigned int q, const double *u_local) const;
+    /// Visits the contact points of cell c for its 16 coefficients u_local:
+    /// visit(q, input, state) with the kernel's input and state at each
+    /// point q. Assembly, postprocessing, contact_points() and
+    /// contact_pressure_at() all walk the contact points through it.
+    template <typename Visit>
+    void
+    visit_contact_points(const unsigned int c,
+                         const double      *u_local,
+                         NonlinearScheme    scheme,
+                         const Visit       &visit) const
+    {
+      for (unsigned int q = 0; q < quadrature.size(); ++q)
+        {
+          const PointInput in = point_input(c, q, u_local);
+          visit(q, in, evaluate_contact_point(in, scheme));
+        }
+    }
     /// Contact energy density at a point (see energy()).
     static double
     energy_density(const PointInput &in, const PointState &st);

@@ -161,13 +161,36 @@ namespace NitscheContact
     /// the deflection w and Laplacian Delta w there.
     PointInput
     point_input(unsigned int c, unsigned int q, double w, double laplacian) const;
-    /// The kernel input at every contact point of a cell for the
-    /// coefficients `u` of the cell (contact FEValues reinit on the cell).
+    /// Visits the contact points of `cell` at the iterate U: reinits
+    /// `contact` (an FEValues of the contact quadrature with at least
+    /// values and hessians) on the cell and calls visit(q, input, state)
+    /// with the kernel's input and state at each point q. Assembly,
+    /// postprocessing, contact_points() and contact_pressure_at() all walk
+    /// the contact points through it.
+    template <typename Visit>
     void
-    cell_point_inputs(const dealii::FEValues<2>   &fe_values,
-                      unsigned int                 c,
-                      const dealii::Vector<double> &u,
-                      std::vector<PointInput>     &inputs) const;
+    visit_contact_points(const dealii::DoFHandler<2>::active_cell_iterator &cell,
+                         dealii::FEValues<2> &contact,
+                         NonlinearScheme      scheme,
+                         const Visit         &visit) const
+    {
+      const unsigned int     n = fe->n_dofs_per_cell();
+      dealii::Vector<double> u(n);
+      contact.reinit(cell);
+      cell->get_dof_values(solution, u);
+      for (unsigned int q = 0; q < contact_quadrature.size(); ++q)
+        {
+          double w = 0., laplacian = 0.;
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              w += u(i) * contact.shape_value(i, q);
+              laplacian += u(i) * trace(contact.shape_hessian(i, q));
+            }
+          const PointInput in =
+            point_input(cell->active_cell_index(), q, w, laplacian);
+          visit(q, in, evaluate_contact_point(in, scheme));
+        }
+    }
     /// T |grad v|^2 integrated: the energy norm.
     double
     energy_norm(const dealii::Vector<double> &v) const override;

@@ -340,6 +340,27 @@ namespace NitscheContact
                 const dealii::Vector<double> &u,
                 unsigned int                  q,
                 double                        gap) const;
+    /// Visits the contact points of cell c with element data d and local
+    /// values u: visit(q, k, input, state) with the point's global index k
+    /// and the kernel's input and state there. Assembly, postprocessing,
+    /// contact_points() and contact_pressure_at() all walk the contact
+    /// points through it.
+    template <typename Visit>
+    void
+    visit_contact_points(const ElementData            &d,
+                         const std::size_t             c,
+                         const dealii::Vector<double> &u,
+                         const NonlinearScheme         scheme,
+                         const Visit                  &visit) const
+    {
+      const unsigned int nq = contact_quadrature.size();
+      for (unsigned int q = 0; q < nq; ++q)
+        {
+          const std::size_t k  = c * nq + q;
+          const PointInput  in = point_input(d, u, q, gaps[k]);
+          visit(q, k, in, evaluate_contact_point(in, scheme));
+        }
+    }
 
     // Assembly (assembly.cc).
     /// What one assemble() computes at the contact points, shared by the
