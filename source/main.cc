@@ -11,6 +11,7 @@
 #include <nitsche_contact/model_registry.h>
 #include <nitsche_contact/moved_entries.h>
 #include <nitsche_contact/parameters.h>
+#include <nitsche_contact/parameters/parameter_file.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -118,152 +119,42 @@ namespace
     return cl;
   }
 
-  /// The subsection path ("A/B") open at line `line` (1-based) of a .prm
-  /// file, for error messages: deal.II only says "the current subsection".
-  std::string
-  subsection_at_line(const std::string &file, const int line)
-  {
-    std::ifstream            in(file);
-    std::vector<std::string> stack;
-    std::string              text;
-    for (int n = 1; n < line && std::getline(in, text); ++n)
-      {
-        text = dealii::Utilities::trim(text.substr(0, text.find('#')));
-        if (text.rfind("subsection ", 0) == 0)
-          stack.push_back(dealii::Utilities::trim(text.substr(11)));
-        else if (text == "end" && !stack.empty())
-          stack.pop_back();
-      }
-    std::string path;
-    for (const auto &s : stack)
-      path += (path.empty() ? "" : "/") + s;
-    return path;
-  }
-
-  /// The text between `before` and `after` in `text` (trimmed), or "".
-  std::string
-  between(const std::string &text,
-          const std::string &before,
-          const std::string &after)
-  {
-    const auto a = text.find(before);
-    if (a == std::string::npos)
-      return "";
-    const auto b = text.find(after, a + before.size());
-    if (b == std::string::npos)
-      return "";
-    return dealii::Utilities::trim(
-      text.substr(a + before.size(), b - a - before.size()));
-  }
-
-  /// "a number >= 0", "an integer in [1, 12]" from deal.II's description
-  /// "[Double 0...MAX_DOUBLE (inclusive)]" or "[Integer range 1...12
-  /// (inclusive)]" of a pattern.
-  std::string
-  range_description(const std::string &pattern)
-  {
-    const bool        integer = pattern.rfind("[Integer", 0) == 0;
-    const std::string kind    = integer ? "an integer" : "a number";
-    const auto        dots    = pattern.find("...");
-    if (dots == std::string::npos)
-      return kind;
-    const auto        space = pattern.rfind(' ', dots);
-    const std::string low   = pattern.substr(space + 1, dots - space - 1);
-    const std::string high =
-      pattern.substr(dots + 3, pattern.find(' ', dots) - dots - 3);
-    const bool has_low  = low != "-MAX_DOUBLE" && low != "-2147483648";
-    const bool has_high = high != "MAX_DOUBLE" && high != "2147483647";
-    if (has_low && has_high)
-      return kind + " in [" + low + ", " + high + "]";
-    if (has_low)
-      return kind + " >= " + low;
-    if (has_high)
-      return kind + " <= " + high;
-    return kind;
-  }
-
-  /// The message for deal.II's report of a value that does not match its
-  /// entry's pattern, in the program's one format; "" for other reports.
-  std::string
-  pattern_mismatch_message(const std::string &text,
-                           const std::string &file,
-                           const int          line)
-  {
-    const std::string value   = between(text, "The entry value", "for the entry named");
-    const std::string entry   = between(text, "for the entry named", "does not match");
-    const auto        p       = text.find("does not match the given pattern:");
-    if (entry.empty() || p == std::string::npos)
-      return "";
-    const std::string pattern = dealii::Utilities::trim(text.substr(p + 33));
-    std::string       allowed = "allowed is " + pattern;
-    if (pattern.rfind("[Selection ", 0) == 0)
-      {
-        allowed = "allowed are ";
-        const auto names = dealii::Utilities::split_string_list(
-          pattern.substr(11, pattern.size() - 12), '|');
-        for (unsigned int i = 0; i < names.size(); ++i)
-          allowed += (i ? ", '" : "'") + names[i] + "'";
-      }
-    else if (pattern.rfind("[Bool", 0) == 0)
-      allowed = "allowed are 'true' and 'false'";
-    else if (pattern.rfind("[Double", 0) == 0 ||
-             pattern.rfind("[Integer", 0) == 0)
-      allowed = "allowed is " + range_description(pattern);
-    const std::string sub = subsection_at_line(file, line);
-    return "invalid value '" + value + "' for parameter '" +
-           (sub.empty() ? entry : sub + "/" + entry) + "' (line " +
-           std::to_string(line) + " of '" + file + "'): " + allowed;
-  }
-
   /// Read the parameter file into `prm`; every problem is an InputError.
+  /// A .prm file goes through the program's reader (parameter_file.h);
+  /// deal.II reads the XML and JSON formats, chosen by the extension.
   void
   read_parameter_file(dealii::ParameterHandler &prm, const std::string &file)
   {
+    const std::string extension = std::filesystem::path(file).extension();
+    if (extension != ".xml" && extension != ".json")
+      {
+        const std::vector<ParameterLine> lines = read_parameter_lines(file);
+        check_moved_entries(lines);
+        apply_parameter_lines(prm, lines);
+        return;
+      }
     if (!std::filesystem::is_regular_file(file))
       throw InputError("the parameter file '" + file +
                        "' does not exist or is not a regular file");
-    check_moved_entries(file);
     try
       {
         prm.parse_input(file, "", false, true);
       }
     catch (const dealii::ExceptionBase &e)
       {
-        // deal.II's message names the file, line, entry and pattern; keep
-        // it, without the stack trace, and name the subsection
         std::ostringstream msg;
         e.print_info(msg);
-        std::string text = msg.str();
-        while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
-          text.pop_back();
-        const auto pos  = text.find("Line <");
-        const int  line = pos != std::string::npos ?
-                            std::atoi(text.c_str() + pos + 6) :
-                            0;
-        const std::string mismatch =
-          line > 0 ? pattern_mismatch_message(text, file, line) : "";
-        if (!mismatch.empty())
-          throw InputError(mismatch);
-        std::string where;
-        if (line > 0)
-          {
-            const std::string sub = subsection_at_line(file, line);
-            where = "\n    (in subsection '" +
-                    (sub.empty() ? std::string("top level") : sub) +
-                    "'; 'nitsche-contact --print-parameters' lists every "
-                    "entry with its allowed values)";
-          }
-        throw InputError("cannot read '" + file + "':" +
-                         (text.find('\n') != std::string::npos ? "\n" : " ") +
-                         text + where);
+        throw InputError("cannot read '" + file + "': " +
+                         dealii::Utilities::trim(msg.str()));
       }
     catch (const std::exception &e)
       {
-        // the XML and JSON readers (chosen by the file's extension) throw
-        // boost's parser errors
+        // (boost's parser errors)
         throw InputError("cannot read '" + file + "': " + e.what());
       }
   }
+
+
 
   /// The outermost directory of `path` that does not exist yet (empty if
   /// all exist or the check fails): what a run creates, and removes again

@@ -1,11 +1,15 @@
 // Entries that a parameter file may still use but that have moved or gone.
 // Whoever declares the replacement names the old entry here, in its
-// declare function; main() checks the file for them before deal.II reads
-// it, so that the error names the replacement instead of an unknown entry.
+// declare function; main() checks the lines of the parameter file for them
+// before it sets them, so that the error names the replacement instead of
+// an unknown entry.
 #ifndef nitsche_contact_moved_entries_h
 #define nitsche_contact_moved_entries_h
 
+#include <nitsche_contact/parameters/parameter_file.h>
+
 #include <string>
+#include <vector>
 
 namespace NitscheContact
 {
@@ -15,10 +19,10 @@ namespace NitscheContact
   declare_moved_entry(const std::string &old_path,
                       const std::string &replacement);
 
-  /// InputError naming the first moved entry that a .prm file sets, its
-  /// line and its replacement.
+  /// InputError naming the first moved entry that the lines of a .prm
+  /// file set, its line and its replacement.
   void
-  check_moved_entries(const std::string &file);
+  check_moved_entries(const std::vector<ParameterLine> &lines);
 } // namespace NitscheContact
 
 #endif

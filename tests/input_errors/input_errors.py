@@ -35,7 +35,7 @@ def execute(argv):
 # (case, prm body, substrings the message must contain)
 CASES = [
     ("unknown entry", "subsection Material\n  set Youngs modulus = 1\nend",
-     ["Youngs modulus", "Material"]),
+     ["'Material/Youngs modulus'", "line 10", "did you mean 'Young's modulus'"]),
     ("misspelled subsection", "subsection Materail\n  set Poisson ratio = 0.3\nend",
      ["Materail"]),
     ("unknown top-level entry", "set Modell = elasticity", ["Modell"]),
@@ -548,6 +548,24 @@ CASES.append(("region load named twice",
 CASES.append(("region load id not a number",
               "subsection Load\n  set Region loads = plate: -1\nend",
               ["Load/Region loads", "'plate' is no material id"]))
+
+# The syntax of the file itself (the body starts on line 9 of each file).
+CASES.append(("subsection without end",
+              "subsection Material\n  set Poisson ratio = 0.3",
+              ["subsection 'Material'", "has no 'end'"]))
+CASES.append(("end without subsection", "end",
+              ["'end' without a subsection", "line 9"]))
+CASES.append(("a line that is no statement",
+              "subsection Material\n  Poisson ratio = 0.3\nend",
+              ["line 10", "'Poisson ratio = 0.3'", "'set Name = value'"]))
+CASES.append(("set without a value", "set Model elasticity",
+              ["line 9", "has no '='"]))
+CASES.append(("a file that includes itself",
+              "include " + os.path.join(args.workdir, "case%02d.prm" % len(CASES)),
+              ["includes itself"]))
+CASES.append(("an included file that does not exist",
+              "include " + os.path.join(args.workdir, "no_such_file.prm"),
+              ["no_such_file.prm", "does not exist"]))
 
 for i, (case, body, expected) in enumerate(CASES):
     prm = os.path.join(args.workdir, "case%02d.prm" % i)
