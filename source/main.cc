@@ -209,13 +209,13 @@ namespace
     // this run created then goes again, unless a cycle finished (the
     // driver wrote its summary there).
     const std::filesystem::path created =
-      outermost_new_directory(common.output_directory);
-    summary = common.output_directory + "/summary.json";
+      outermost_new_directory(common.output.directory);
+    summary = common.output.directory + "/summary.json";
     ContactDriver driver(common, MPI_COMM_WORLD);
     const bool root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
     if (root)
       {
-        std::ofstream used(common.output_directory + "/used_parameters.prm");
+        std::ofstream used(common.output.directory + "/used_parameters.prm");
         prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
       }
     try

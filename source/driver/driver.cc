@@ -37,11 +37,11 @@ namespace NitscheContact
       {
         try
           {
-            std::filesystem::create_directories(prm.output_directory);
+            std::filesystem::create_directories(prm.output.directory);
             // no summary of an earlier run may pass for this one's, should
             // it fail before its first cycle ends
-            std::filesystem::remove(prm.output_directory + "/summary.json");
-            const std::string probe = prm.output_directory + "/.write-test";
+            std::filesystem::remove(prm.output.directory + "/summary.json");
+            const std::string probe = prm.output.directory + "/.write-test";
             std::ofstream     f(probe);
             f << "ok" << std::endl;
             ok = f.good() ? 1 : 0;
@@ -55,7 +55,7 @@ namespace NitscheContact
       }
     ok = Utilities::MPI::broadcast(comm, ok, 0);
     if (!ok)
-      throw InputError("invalid value '" + prm.output_directory +
+      throw InputError("invalid value '" + prm.output.directory +
                        "' for parameter 'Output/Directory': the directory "
                        "cannot be created or is not writable");
   }
@@ -64,12 +64,12 @@ namespace NitscheContact
   ContactDriver::run(ContactModel &model)
   {
     announce(model);
-    for (unsigned int cycle = 0; cycle < prm.n_cycles; ++cycle)
+    for (unsigned int cycle = 0; cycle < prm.geometry.n_cycles; ++cycle)
       {
         const std::vector<Stage> stages = stages_of_cycle(cycle);
         start_cycle(model, cycle, stages[0]);
         pcout << "Cycle " << cycle << ": " << cycle + 1 << " of "
-              << prm.n_cycles << ", " << records.back().n_dofs
+              << prm.geometry.n_cycles << ", " << records.back().n_dofs
               << " DoFs, h = " << records.back().h << std::endl;
         records.back().converged = solve_stages(model, cycle, stages);
         if (!records.back().converged)
@@ -77,12 +77,12 @@ namespace NitscheContact
         finish_cycle(model, cycle);
         // after every cycle: a run stopped later (out of memory, killed)
         // keeps the cycles it finished
-        if (cycle + 1 < prm.n_cycles)
+        if (cycle + 1 < prm.geometry.n_cycles)
           write_summary(model);
       }
     write_tables();
     write_summary(model);
-    if (prm.print_timings)
+    if (prm.output.print_timings)
       print_timings();
   }
 
@@ -93,8 +93,8 @@ namespace NitscheContact
     pcout << "nitsche-contact: model '" << d.name << "'" << std::endl;
     for (const auto &kv : d.entries)
       pcout << "  " << kv.first << " = " << kv.second << std::endl;
-    pcout << "  nonlinear scheme = " << scheme_name(prm.nonlinear.scheme)
-          << std::endl;
+    pcout << "  nonlinear scheme = "
+          << scheme_name(prm.nonlinear.settings.scheme) << std::endl;
     for (const std::string &w : d.warnings)
       pcout << "  warning: " << w << std::endl;
   }
@@ -103,9 +103,9 @@ namespace NitscheContact
   ContactDriver::stages_of_cycle(const unsigned int cycle) const
   {
     std::vector<Stage> stages;
-    const unsigned int n_load = (cycle == 0) ? prm.load_steps : 1;
+    const unsigned int n_load = (cycle == 0) ? prm.nonlinear.load_steps : 1;
     const unsigned int n_friction =
-      (prm.friction > 0.) ? prm.friction_steps : 0;
+      (prm.contact.friction > 0.) ? prm.nonlinear.friction_steps : 0;
     for (unsigned int s = 1; s <= n_load; ++s)
       stages.push_back(
         {double(s) / n_load,
@@ -122,11 +122,12 @@ namespace NitscheContact
         for (unsigned int k = 1; k <= n_friction; ++k)
           {
             const double scale = double(k) / n_friction;
-            stages.push_back({1.,
-                              scale,
-                              "friction step " + std::to_string(k) + "/" +
-                                std::to_string(n_friction) + ": F = " +
-                                number_to_string(scale * prm.friction)});
+            stages.push_back(
+              {1.,
+               scale,
+               "friction step " + std::to_string(k) + "/" +
+                 std::to_string(n_friction) +
+                 ": F = " + number_to_string(scale * prm.contact.friction)});
           }
       }
     return stages;
@@ -194,7 +195,7 @@ namespace NitscheContact
                               const unsigned int        cycle,
                               const std::vector<Stage> &stages)
   {
-    NonlinearSolver solver(prm.nonlinear, pcout);
+    NonlinearSolver solver(prm.nonlinear.settings, pcout);
     CycleRecord    &rec = records.back();
     auto           *start = model_ability<PredictedStart>(model);
     const bool      predicted = start != nullptr && start->predictor();
@@ -207,10 +208,10 @@ namespace NitscheContact
           pcout << "  " << stages[s].label << std::endl;
         SolveStage stage;
         stage.cycle        = cycle;
-        stage.frictional   = prm.friction * stages[s].friction_scale > 0.;
-        stage.friction_in_run = prm.friction > 0.;
+        stage.frictional = prm.contact.friction * stages[s].friction_scale > 0.;
+        stage.friction_in_run = prm.contact.friction > 0.;
         stage.nested_start = cycle > 0 || predicted;
-        if (prm.contact_points_per_iteration)
+        if (prm.output.contact_points_per_iteration)
           {
             const std::string suffix =
               stages.size() > 1 ? numbered("-s", s + 1) : std::string();
@@ -225,14 +226,15 @@ namespace NitscheContact
           }
         catch (const ConvergenceFailure &e)
           {
-            if (stages[s].friction_scale > 0. || prm.friction == 0. ||
-                prm.friction_steps == 0)
+            if (stages[s].friction_scale > 0. || prm.contact.friction == 0. ||
+                prm.nonlinear.friction_steps == 0)
               throw;
             // e.g. a tangential rigid motion that only friction holds
             throw ConvergenceFailure(
               std::string(e.what()) +
               " [in the frictionless stage of 'Nonlinear solver/Friction "
-              "steps' = " + std::to_string(prm.friction_steps) +
+              "steps' = " +
+              std::to_string(prm.nonlinear.friction_steps) +
               ": if only friction restrains the body tangentially, that "
               "stage is singular; set 'Friction steps = 0']");
           }
@@ -250,12 +252,12 @@ namespace NitscheContact
   ContactDriver::handle_non_convergence(const ContactModel &model,
                                         const unsigned int  cycle)
   {
-    const unsigned int max_its = prm.nonlinear.max_iterations;
-    if (prm.allow_non_convergence)
+    const unsigned int max_its = prm.nonlinear.settings.max_iterations;
+    if (prm.nonlinear.allow_non_convergence)
       {
         pcout << "  NOT CONVERGED: "
               << (failure.empty() ?
-                    "the " + scheme_name(prm.nonlinear.scheme) +
+                    "the " + scheme_name(prm.nonlinear.settings.scheme) +
                       " iteration did not converge in " +
                       std::to_string(max_its) + " iterations on cycle " +
                       std::to_string(cycle) :
@@ -272,7 +274,7 @@ namespace NitscheContact
       " iterations on cycle " + std::to_string(cycle) +
       " (raise 'Nonlinear solver/Maximum iterations', or set 'Allow "
       "non-convergence = true' to keep going)" +
-      (prm.friction > 0. && prm.friction_steps == 0 ?
+      (prm.contact.friction > 0. && prm.nonlinear.friction_steps == 0 ?
          "; with Coulomb friction, 'Nonlinear solver/Friction steps = 1' "
          "(each cycle solved frictionless first, then with F; N > 1 raises "
          "F in N steps) often converges where the direct frictional solve "
@@ -287,7 +289,7 @@ namespace NitscheContact
     TimerOutput::Scope postprocess(*rec.timer, Phase::postprocess);
     try
       {
-        rec.results = model.postprocess(prm.probes);
+        rec.results = model.postprocess(prm.output.probes);
       }
     catch (const ConvergenceFailure &)
       {
@@ -300,10 +302,10 @@ namespace NitscheContact
     postprocess.stop();
 
     TimerOutput::Scope output(*rec.timer, Phase::output);
-    if (prm.output_format != "none")
+    if (prm.output.format != "none")
       write_graphical_output(model, cycle);
     write_profile(model, cycle);
-    if (prm.contact_points)
+    if (prm.output.contact_points)
       write_contact_points(model, cycle);
     output.stop();
     print_cycle_results();
@@ -319,7 +321,7 @@ namespace NitscheContact
     // console lines but one per cycle, and no per-iteration output
     const std::string name = predictor.describe().name;
     const bool        print = pcout.is_active();
-    NonlinearSolver   solver(prm.nonlinear, pcout);
+    NonlinearSolver   solver(prm.nonlinear.settings, pcout);
     for (const unsigned int k : cycles)
       {
         Timer timer;
@@ -370,7 +372,7 @@ namespace NitscheContact
              "no convergence in " + std::to_string(result.iterations) +
                " iterations (raise 'Nonlinear solver/Maximum iterations')" :
              result.failure);
-        if (!prm.allow_non_convergence)
+        if (!prm.nonlinear.allow_non_convergence)
           throw ConvergenceFailure(what + "; or set '" + entry +
                                    " = false' [summary.json holds the "
                                    "cycles before it]");

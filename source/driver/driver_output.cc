@@ -70,14 +70,14 @@ namespace NitscheContact
                                         const unsigned int  cycle)
   {
     for (const auto &series :
-         model.write_graphical_output(prm.output_directory, cycle))
+         model.write_graphical_output(prm.output.directory, cycle))
       pvd_entries[series.first].emplace_back(static_cast<double>(cycle),
                                              series.second);
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
     for (const auto &series : pvd_entries)
       {
-        std::ofstream pvd(prm.output_directory + "/" + series.first + ".pvd");
+        std::ofstream pvd(prm.output.directory + "/" + series.first + ".pvd");
         DataOutBase::write_pvd_record(pvd, series.second);
       }
   }
@@ -94,8 +94,8 @@ namespace NitscheContact
             << ", penetration by it up to " << r.compliance_penetration
             << std::endl;
     for (unsigned int p = 0; p < r.probes.size(); ++p)
-      pcout << "  deflection at (" << prm.probes[p] << ") = " << r.probes[p]
-            << std::endl;
+      pcout << "  deflection at (" << prm.output.probes[p]
+            << ") = " << r.probes[p] << std::endl;
     for (const auto &e : r.errors)
       {
         pcout << "  error " << e.first << " = " << e.second << std::endl;
@@ -128,22 +128,23 @@ namespace NitscheContact
   ContactDriver::write_profile(const ContactModel &model,
                                const unsigned int  cycle) const
   {
-    std::vector<Point<2>> points(prm.profile_points);
-    for (unsigned int i = 0; i < prm.profile_points; ++i)
+    std::vector<Point<2>> points(prm.output.profile_points);
+    for (unsigned int i = 0; i < prm.output.profile_points; ++i)
       {
-        const double s = double(i) / (prm.profile_points - 1);
-        points[i]      = prm.profile_start + s * (prm.profile_end -
-                                             prm.profile_start);
+        const double s = double(i) / (prm.output.profile_points - 1);
+        points[i]      = prm.output.profile_start +
+                    s * (prm.output.profile_end - prm.output.profile_start);
       }
     const std::vector<double> w = model.deflection_at(points);
     const std::vector<double> pressure = model.contact_pressure_at(points);
     // the 2D field (collective: before the rank check below)
-    if (cycle + 1 == prm.n_cycles && prm.field_points > 0)
+    if (cycle + 1 == prm.geometry.n_cycles && prm.output.field_points > 0)
       {
         // a grid over the plate's bounding box; its points off the plate
         // are left out
-        const unsigned int    n = prm.field_points;
-        const Point<2>       &a = prm.geometry.lower, &b = prm.geometry.upper;
+        const unsigned int n = prm.output.field_points;
+        const Point<2>    &a = prm.geometry.plate.lower,
+                       &b    = prm.geometry.plate.upper;
         std::vector<Point<2>> grid;
         for (unsigned int j = 0; j < n; ++j)
           for (unsigned int i = 0; i < n; ++i)
@@ -152,7 +153,7 @@ namespace NitscheContact
         const std::vector<double> wg = model.deflection_at(grid);
         if (Utilities::MPI::this_mpi_process(comm) != 0)
           return;
-        std::ofstream g(prm.output_directory + "/field.csv");
+        std::ofstream g(prm.output.directory + "/field.csv");
         g << "x,y,deflection\n" << std::setprecision(10);
         for (unsigned int k = 0; k < grid.size(); ++k)
           if (std::isfinite(wg[k]))
@@ -160,8 +161,9 @@ namespace NitscheContact
       }
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
-    const double  length = prm.profile_start.distance(prm.profile_end);
-    std::ofstream f(prm.output_directory + "/profile-" +
+    const double length =
+      prm.output.profile_start.distance(prm.output.profile_end);
+    std::ofstream f(prm.output.directory + "/profile-" +
                     Utilities::int_to_string(cycle, 2) + ".csv");
     f << "s,x,y,deflection,pressure\n" << std::setprecision(10);
     // points of the line off the plate (a hole, a re-entrant corner, the
@@ -179,11 +181,11 @@ namespace NitscheContact
             << " points of 'Output/Profile line' lie off the plate and are "
                "left out of profile.csv"
             << std::endl;
-    if (cycle + 1 == prm.n_cycles)
+    if (cycle + 1 == prm.geometry.n_cycles)
       std::filesystem::copy_file(
-        prm.output_directory + "/profile-" + Utilities::int_to_string(cycle, 2) +
-          ".csv",
-        prm.output_directory + "/profile.csv",
+        prm.output.directory + "/profile-" +
+          Utilities::int_to_string(cycle, 2) + ".csv",
+        prm.output.directory + "/profile.csv",
         std::filesystem::copy_options::overwrite_existing);
   }
 
@@ -197,10 +199,11 @@ namespace NitscheContact
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
     // iterate < 0: the cycle's converged iterate
-    std::ofstream f(prm.output_directory + "/contact_points-" +
+    std::ofstream f(prm.output.directory + "/contact_points-" +
                     Utilities::int_to_string(cycle, 2) +
                     (iterate < 0 ? std::string() :
-                                   stage_suffix + "-i" + Utilities::int_to_string(iterate, 3)) +
+                                   stage_suffix + "-i" +
+                                     Utilities::int_to_string(iterate, 3)) +
                     ".csv");
     f << "x,y,cell_x,cell_y,weight,status,s_n,sigma_n,gap,pressure,"
          "slip_x,slip_y,slip_z,q_x,q_y,q_z,tau,lambda_t_x,lambda_t_y,lambda_t_z\n"
@@ -272,13 +275,13 @@ namespace NitscheContact
       return;
     std::cout << std::endl;
     table.write_text(std::cout);
-    std::ofstream txt(prm.output_directory + "/convergence.txt");
+    std::ofstream txt(prm.output.directory + "/convergence.txt");
     table.write_text(txt);
-    std::ofstream tex(prm.output_directory + "/convergence.tex");
+    std::ofstream tex(prm.output.directory + "/convergence.tex");
     table.write_tex(tex);
 
     // The same data as CSV (full precision), with the rates of the errors.
-    std::ofstream csv(prm.output_directory + "/convergence.csv");
+    std::ofstream csv(prm.output.directory + "/convergence.csv");
     csv << "cycle,dofs,h,iterations,contact_area,contact_force,"
            "min_deflection,max_deflection";
     if (!records.empty())
@@ -320,20 +323,21 @@ namespace NitscheContact
   {
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
-    std::ofstream f(prm.output_directory + "/summary.json");
+    std::ofstream          f(prm.output.directory + "/summary.json");
     const ModelDescription desc = model.describe();
     f << "{\n  \"model\": " << json_string(desc.name) << ",\n";
     f << "  \"parameters\": {\n";
     for (const auto &kv : desc.entries)
       f << "    " << json_string(kv.first) << ": " << json_string(kv.second)
         << ",\n";
-    f << "    \"nonlinear scheme\": " << json_string(scheme_name(prm.nonlinear.scheme))
-      << ",\n    \"mpi processes\": "
-      << Utilities::MPI::n_mpi_processes(comm) << "\n  },\n";
+    f << "    \"nonlinear scheme\": "
+      << json_string(scheme_name(prm.nonlinear.settings.scheme))
+      << ",\n    \"mpi processes\": " << Utilities::MPI::n_mpi_processes(comm)
+      << "\n  },\n";
     f << "  \"probe_points\": [";
-    for (unsigned int p = 0; p < prm.probes.size(); ++p)
-      f << (p ? ", " : "") << "[" << json_number(prm.probes[p][0]) << ", "
-        << json_number(prm.probes[p][1]) << "]";
+    for (unsigned int p = 0; p < prm.output.probes.size(); ++p)
+      f << (p ? ", " : "") << "[" << json_number(prm.output.probes[p][0])
+        << ", " << json_number(prm.output.probes[p][1]) << "]";
     f << "],\n  \"cycles\": [\n";
     for (unsigned int i = 0; i < records.size(); ++i)
       {
@@ -367,7 +371,7 @@ namespace NitscheContact
           << json_number(r.results.min_deflection)
           << ",\n      \"max_deflection\": "
           << json_number(r.results.max_deflection) << ",\n      \"probes\": ";
-        if (r.results.probes.size() != prm.probes.size())
+        if (r.results.probes.size() != prm.output.probes.size())
           f << "null"; // not postprocessed
         else
           {

@@ -1,5 +1,7 @@
 // The rigid obstacle as a height field below the plate.
-#include <nitsche_contact/parameters.h>
+#include <nitsche_contact/parameters/input_checks.h>
+#include <nitsche_contact/parameters/obstacle_surface.h>
+#include <nitsche_contact/parameters/sections.h>
 
 #include <cmath>
 
@@ -7,19 +9,19 @@ namespace NitscheContact
 {
   using namespace dealii;
 
-  ObstacleSurface::ObstacleSurface(const CommonParameters &prm)
-    : type(prm.obstacle_type)
-    , level(prm.obstacle_level)
+  ObstacleSurface::ObstacleSurface(const ObstacleParameters &prm)
+    : type(prm.type)
+    , level(prm.level)
     , center(prm.sphere_center)
     , radius(prm.sphere_radius)
-    , expression(prm.obstacle_expression)
+    , expression(prm.expression)
   {
     if (type == "function")
-      function = make_parsed_function<2>(prm.obstacle_expression, "", 1,
-                                         "Obstacle/Height");
+      function =
+        make_parsed_function<2>(prm.expression, "", 1, "Obstacle/Height");
     if (type == "data")
       {
-        const HeightData &d = *prm.obstacle_data;
+        const HeightData &d = *prm.data;
         data_lower          = d.lower;
         data_upper          = d.upper;
         data = std::make_unique<Functions::InterpolatedUniformGridData<2>>(

@@ -1,9 +1,9 @@
 // The transverse load: the function and the region loads.
 #include <deal.II/base/utilities.h>
 
-#include <nitsche_contact/parameters.h>
+#include <nitsche_contact/parameters/input_checks.h>
+#include <nitsche_contact/parameters/sections.h>
 #include <nitsche_contact/parameters/transverse_load.h>
-
 
 namespace NitscheContact
 {
@@ -69,10 +69,10 @@ namespace NitscheContact
     return loads;
   }
 
-  TransverseLoad::TransverseLoad(const CommonParameters &prm)
-    : text(prm.load_expression)
-    , function(make_parsed_function<2>(prm.load_expression,
-                                       prm.load_constants,
+  TransverseLoad::TransverseLoad(const LoadParameters &prm)
+    : text(prm.expression)
+    , function(make_parsed_function<2>(prm.expression,
+                                       prm.constants,
                                        1,
                                        "Load/Transverse load"))
     , regions(prm.region_loads)

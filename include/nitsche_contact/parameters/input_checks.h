@@ -1,6 +1,6 @@
-// Reading and checking user input: the errors the program reports, the
-// one message format for a bad value, numbers and lists, and parsed
-// functions with their finiteness on the plate.
+// Reading and checking user input: numbers and lists, entries declared
+// with their allowed values, and parsed functions with their finiteness on
+// the plate (the errors are in input_error.h).
 #ifndef nitsche_contact_parameters_input_checks_h
 #define nitsche_contact_parameters_input_checks_h
 
@@ -10,32 +10,15 @@
 #include <deal.II/base/point.h>
 
 #include <nitsche_contact/geometry/plate_geometry.h>
+#include <nitsche_contact/parameters/input_error.h>
 
 #include <memory>
-#include <new>
 #include <optional>
-#include <stdexcept>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace NitscheContact
 {
-  /// Error in the user's input: the message names the entry, the value and
-  /// what is allowed. main() prints it and exits with status 1.
-  class InputError : public std::runtime_error
-  {
-  public:
-    using std::runtime_error::runtime_error;
-  };
-
-  /// Throw the InputError "invalid value 'value' for parameter 'entry':
-  /// allowed" (the one message format for all bad input).
-  [[noreturn]] void
-  bad_value(const std::string &entry,
-            const std::string &value,
-            const std::string &allowed);
-
   /// The finite decimal numbers of a list like "1, 2.5, -3e-2" (split at
   /// `separator`, blanks trimmed); anything else is bad_value(entry, text).
   std::vector<double>
@@ -65,31 +48,6 @@ namespace NitscheContact
   /// messages and logs.
   std::string
   number_to_string(double x);
-
-  /// A nonlinear solve that did not converge (exit status 2).
-  class ConvergenceFailure : public std::runtime_error
-  {
-  public:
-    using std::runtime_error::runtime_error;
-  };
-
-  /// A solver that could not allocate its memory (MUMPS INFOG(1) = -7,
-  /// -13, -19): main() reports it as out of memory, like std::bad_alloc.
-  class OutOfMemory : public std::bad_alloc
-  {
-  public:
-    explicit OutOfMemory(std::string what)
-      : message(std::move(what))
-    {}
-    const char *
-    what() const noexcept override
-    {
-      return message.c_str();
-    }
-
-  private:
-    std::string message;
-  };
 
   /// Build a FunctionParser from "expr1; expr2; ..." with variables x,y[,z]
   /// and constants "a=1, b=2"; throws InputError naming `entry`.

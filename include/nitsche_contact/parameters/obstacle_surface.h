@@ -11,7 +11,7 @@
 
 namespace NitscheContact
 {
-  struct CommonParameters;
+  struct ObstacleParameters;
 
   /// The rigid obstacle as a height field z = z_obs(x, y) below the plate.
   /// Where a sphere or a data grid does not reach, the height is
@@ -28,7 +28,7 @@ namespace NitscheContact
     {
       return gap < 1e29;
     }
-    explicit ObstacleSurface(const CommonParameters &prm);
+    explicit ObstacleSurface(const ObstacleParameters &prm);
     /// Obstacle height below the in-plane point p.
     double
     height(const dealii::Point<2> &p) const;

@@ -14,7 +14,7 @@
 namespace NitscheContact
 {
   class PlateGeometry;
-  struct CommonParameters;
+  struct LoadParameters;
 
   /// 'Load/Region loads' ("1: -0.02; 2: 0"): InputError for a malformed
   /// item, an id named twice, a value that is not a finite number, or an
@@ -26,7 +26,7 @@ namespace NitscheContact
   class TransverseLoad
   {
   public:
-    explicit TransverseLoad(const CommonParameters &prm);
+    explicit TransverseLoad(const LoadParameters &prm);
 
     /// q(x) + the region load of `region` (a cell's material id)
     double

@@ -21,11 +21,12 @@ namespace NitscheContact
   void
   require_one_layer(const CommonParameters &prm, const std::string &model)
   {
-    if (prm.subdivisions.size() > 2 && prm.subdivisions[2] != 1)
+    if (prm.geometry.subdivisions.size() > 2 &&
+        prm.geometry.subdivisions[2] != 1)
       bad_value("Geometry/Subdivisions",
-                std::to_string(prm.subdivisions[0]) + ", " +
-                  std::to_string(prm.subdivisions[1]) + ", " +
-                  std::to_string(prm.subdivisions[2]),
+                std::to_string(prm.geometry.subdivisions[0]) + ", " +
+                  std::to_string(prm.geometry.subdivisions[1]) + ", " +
+                  std::to_string(prm.geometry.subdivisions[2]),
                 "the " + model +
                   " plate model has no cells through the thickness; give "
                   "'nx, ny' (or nz = 1)");
@@ -95,40 +96,42 @@ namespace NitscheContact
 
   std::string
   theta_bending_bias_warning(const CommonParameters &prm,
+                             const double            gamma0,
                              const double            h_n,
                              const std::string      &model,
                              const double            shear_factor)
   {
-    const double nu       = prm.poisson_ratio;
-    const double lambda_E = prm.lambda() / prm.youngs_modulus;
+    const double nu       = prm.material.poisson_ratio;
+    const double lambda_E = prm.material.lambda() / prm.material.youngs_modulus;
     const double factor   = 3. * (1. - nu * nu) * lambda_E * lambda_E *
-                          (h_n / prm.thickness);
-    const double c_D      = factor / prm.gamma0;
+                          (h_n / prm.geometry.thickness);
+    const double c_D = factor / gamma0;
     // the tangential term's relative change of the shear stiffness, times
     // gamma0 (mu / E = 1 / (2 (1 + nu)))
     const double shear_factor_g =
       shear_factor > 0. ?
-        h_n / (2. * (1. + nu) * shear_factor * prm.thickness) :
+        h_n / (2. * (1. + nu) * shear_factor * prm.geometry.thickness) :
         0.;
-    const double c_s = shear_factor_g / prm.gamma0;
-    if (prm.theta == 0. || (c_D <= 0.01 && c_s <= 0.01))
+    const double c_s = shear_factor_g / gamma0;
+    if (prm.contact.theta == 0. || (c_D <= 0.01 && c_s <= 0.01))
       return "";
     std::ostringstream o;
-    o << std::setprecision(3) << "  warning: with 'Contact/Nitsche theta' = "
-      << prm.theta << " and 'Contact/Nitsche gamma0' = " << prm.gamma0
+    o << std::setprecision(3)
+      << "  warning: with 'Contact/Nitsche theta' = " << prm.contact.theta
+      << " and 'Contact/Nitsche gamma0' = " << gamma0
       << " the theta-terms of the " << model
       << " act on the whole plate, also away from contact, and change its "
          "(tr k)^2 bending stiffness by "
-      << -prm.theta * 100. * c_D
+      << -prm.contact.theta * 100. * c_D
       << " % (c/D = 3(1-nu^2)(lambda/E)^2 (h_n/t)/gamma0 = " << c_D
       << ", h_n = " << h_n << ")";
     if (shear_factor > 0.)
       o << ", and with friction the tangential theta-term changes its "
            "shear stiffness by "
-        << -prm.theta * 100. * c_s
+        << -prm.contact.theta * 100. * c_s
         << " % (c_s = mu h_n / (kappa_s gamma0 E t) = " << c_s << ")";
     o << ": the result is that of a different plate";
-    if (prm.theta == 1. && c_D >= (1. + nu) / 2.)
+    if (prm.contact.theta == 1. && c_D >= (1. + nu) / 2.)
       o << ", and with c/D >= (1+nu)/2 = " << (1. + nu) / 2.
         << " its bending form need not be coercive (the bound for any "
            "edges; clamped edges allow c/D < 1, doc/mindlin.md)";

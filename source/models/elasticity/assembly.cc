@@ -142,7 +142,7 @@ namespace NitscheContact
                                       LoadRecord         &record) const
   {
     const unsigned int        n      = comp.size();
-    const double              lambda = prm.lambda(), mu = prm.mu();
+    const double lambda = prm.material.lambda(), mu = prm.material.mu();
     std::vector<Tensor<1, 3>> grads(n);
     cell_matrix = 0.;
     cell_rhs    = 0.;
@@ -173,7 +173,7 @@ namespace NitscheContact
             const double    f3 =
               transverse_load->value(Point<2>(x[0], x[1]),
                                      fv.get_cell()->material_id()) /
-              prm.thickness;
+              prm.geometry.thickness;
             record.note(1., f3, x);
             for (unsigned int i = 0; i < n; ++i)
               if (comp[i] == 2)
@@ -212,8 +212,8 @@ namespace NitscheContact
               record.note(2., t[1], x);
               record.note(1., t[2], x);
               {
-                const double dx = x[0] - prm.geometry.box_center()[0],
-                             dy = x[1] - prm.geometry.box_center()[1],
+                const double dx  = x[0] - prm.geometry.plate.box_center()[0],
+                             dy  = x[1] - prm.geometry.plate.box_center()[1],
                              JxW = fvf.JxW(q);
                 record.in_plane[0] += t[0] * JxW;
                 record.in_plane[1] += t[1] * JxW;
@@ -250,7 +250,7 @@ namespace NitscheContact
           non_finite_at_point(traction ? "Elasticity/Top tangential traction" :
                                          "Load/Transverse load",
                               traction ? tangential_traction :
-                                         prm.load_expression,
+                                         prm.load.expression,
                               report[1],
                               Point<2>(report[2], report[3]));
         }
@@ -298,7 +298,7 @@ namespace NitscheContact
   ElasticityModel::assemble_theta_matrix()
   {
     theta_matrix_stale = false;
-    if (prm.theta == 0.)
+    if (prm.contact.theta == 0.)
       return;
     const unsigned int                   n = fe.n_dofs_per_cell();
     FullMatrix<double>                   cell_matrix(n, n);
@@ -306,7 +306,7 @@ namespace NitscheContact
     std::vector<unsigned int>            comp(n);
     for (unsigned int i = 0; i < n; ++i)
       comp[i] = fe.system_to_component_index(i).first;
-    const double lambda = prm.lambda(), mu = prm.mu();
+    const double lambda = prm.material.lambda(), mu = prm.material.mu();
     // The theta-terms of every contact point (status independent).
     theta_matrix.copy_from(bulk_matrix);
     FEFaceValues<3> fvc(mapping, fe, contact_face_quadrature,
@@ -322,8 +322,13 @@ namespace NitscheContact
         for (unsigned int q = 0; q < contact_face_quadrature.size(); ++q)
           {
             shape_contact_data(fvc, q, comp, lambda, mu, shapes);
-            add_theta_terms(prm.theta / r, friction > 0., shapes,
-                            fvc.JxW(q), nullptr, &cell_matrix, nullptr);
+            add_theta_terms(prm.contact.theta / r,
+                            friction > 0.,
+                            shapes,
+                            fvc.JxW(q),
+                            nullptr,
+                            &cell_matrix,
+                            nullptr);
           }
         cell->get_dof_indices(dofs);
         constraints.distribute_local_to_global(cell_matrix, dofs,
@@ -336,7 +341,7 @@ namespace NitscheContact
   ElasticityModel::trace_constant() const
   {
     const unsigned int n = fe.n_dofs_per_cell();
-    const double       lambda = prm.lambda(), mu = prm.mu();
+    const double       lambda = prm.material.lambda(), mu = prm.material.mu();
     double             c_n    = 0.;
     int                non_finite = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -398,17 +403,18 @@ namespace NitscheContact
                   non_finite = 1;
                   break;
                 }
-              c_n = largest_generalized_eigenvalue(s, a) / prm.youngs_modulus;
+              c_n = largest_generalized_eigenvalue(s, a) /
+                    prm.material.youngs_modulus;
             }
     // (on every rank: a rank without contact cells must not wait alone)
     if (Utilities::MPI::max(non_finite, comm) > 0)
       throw InputError(
         "the stiffness of the contact cells is not a finite number: "
         "'Material/Young's modulus' = " +
-        number_to_string(prm.youngs_modulus) + ", 'Geometry/Thickness' = " +
-        number_to_string(prm.thickness) + " and the plate lengths " +
-        number_to_string(prm.length_x) + " x " +
-        number_to_string(prm.length_y) +
+        number_to_string(prm.material.youngs_modulus) +
+        ", 'Geometry/Thickness' = " + number_to_string(prm.geometry.thickness) +
+        " and the plate lengths " + number_to_string(prm.geometry.length_x) +
+        " x " + number_to_string(prm.geometry.length_y) +
         " overflow double precision; allowed: magnitudes whose products "
         "stay finite (e.g. SI or N-mm units)");
     return Utilities::MPI::max(c_n, comm);
@@ -419,7 +425,7 @@ namespace NitscheContact
                              const unsigned int face) const
   {
     const double h_n = cell->measure() / cell->face(face)->measure();
-    return prm.gamma0 * prm.youngs_modulus / h_n;
+    return gamma0 * prm.material.youngs_modulus / h_n;
   }
 
   ContactCounts
@@ -451,7 +457,7 @@ namespace NitscheContact
     // side of the step only).
     const bool track_q = with_matrix && friction > 0. &&
                          scheme == NonlinearScheme::newton &&
-                         prm.stick_on_reversal;
+                         prm.nonlinear.stick_on_reversal;
     std::vector<Tensor<1, 3>> qs;
     if (track_q)
       step_correction = 0.;
@@ -495,7 +501,7 @@ namespace NitscheContact
     Vector<double>     cell_residual(n);
     std::vector<types::global_dof_index> dofs(n);
     std::vector<ShapeContactData>        shapes(n);
-    const double lambda = prm.lambda(), mu = prm.mu();
+    const double lambda = prm.material.lambda(), mu = prm.material.mu();
     std::vector<unsigned int> comp(n);
     for (unsigned int i = 0; i < n; ++i)
       comp[i] = fe.system_to_component_index(i).first;
@@ -552,9 +558,12 @@ namespace NitscheContact
           add_point_contribution(in, st, shapes, fvf.JxW(q),
                                  with_matrix ? &cell_matrix : nullptr,
                                  cell_residual);
-        if (prm.theta != 0.)
-          add_theta_terms(prm.theta / in.r, friction > 0., shapes,
-                          -fvf.JxW(q), &in,
+        if (prm.contact.theta != 0.)
+          add_theta_terms(prm.contact.theta / in.r,
+                          friction > 0.,
+                          shapes,
+                          -fvf.JxW(q),
+                          &in,
                           with_matrix ? &cell_matrix : nullptr,
                           &cell_residual);
       },
@@ -630,7 +639,8 @@ namespace NitscheContact
               Tensor<2, 3> g;
               for (unsigned int a = 0; a < 3; ++a)
                 g[a] = grads[q][a];
-              const Tensor<2, 3> s = stress(g, prm.lambda(), prm.mu());
+              const Tensor<2, 3> s =
+                stress(g, prm.material.lambda(), prm.material.mu());
               double             e = 0.;
               for (unsigned int a = 0; a < 3; ++a)
                 for (unsigned int b = 0; b < 3; ++b)
@@ -705,7 +715,7 @@ namespace NitscheContact
             const double ds = ind.sigma_n - r * ind.u_n;
             const double coefficient =
               fvf.JxW(q) * in0.lambda_scale *
-              (ind.u_n - (prm.theta / r) * ind.sigma_n);
+              (ind.u_n - (prm.contact.theta / r) * ind.sigma_n);
             const bool active0 = (s0 <= 0.), active1 = (s0 + ds <= 0.);
             if (active0 && active1)
               {

@@ -18,6 +18,9 @@ namespace NitscheContact
                                    ParameterHandler       &ph,
                                    MPI_Comm                comm)
     : prm(common)
+    // 'auto': above the trace constants 12.1 (Q1) and 33.65 (Q2) of the
+    // Gauss-Lobatto contact points on flat cells (doc/elasticity.md)
+    , gamma0(common.contact.gamma0_or(60.))
     , comm(comm)
     , linear_solver(read_linear_solver_parameters(ph))
     , triangulation(comm)
@@ -26,10 +29,10 @@ namespace NitscheContact
     // circular edges the mapping has the element's degree, at least 2, so
     // that the next cycle's points on the circle lie within a small
     // fraction of a cell of this cycle's boundary (refine_in_plane())
-    , mapping(common.geometry.has_curved_edges() ?
+    , mapping(common.geometry.plate.has_curved_edges() ?
                 std::max(2u, read_degree(ph)) :
                 1)
-    , obstacle(common)
+    , obstacle(common.obstacle)
     , direct_solver(direct_solver_settings())
     , two_level("raise 'Contact/Nitsche gamma0' (its coercivity bound is "
                 "(1+theta)^2/4 nitsche_trace_constant) or use theta = -1")
@@ -37,35 +40,40 @@ namespace NitscheContact
     // the checks of the common input that depend on the model: a
     // hexahedron refines into 8, r = gamma0 E / t, and the contact surface
     // is the bottom face
-    for (const types::boundary_id b : prm.geometry.boundary_ids)
-      if (prm.boundary_condition(b) == EdgeCondition::symmetry &&
-          (b >= contact_id || !is_cartesian(prm.geometry.shape)))
+    for (const types::boundary_id b : prm.geometry.plate.boundary_ids)
+      if (prm.geometry.boundary_condition(b) == EdgeCondition::symmetry &&
+          (b >= contact_id || !is_cartesian(prm.geometry.plate.shape)))
         bad_value("Geometry/Boundary conditions",
-                  prm.geometry.conditions.text(),
+                  prm.geometry.plate.conditions.text(),
                   "the 3D model holds 'symmetry' (the normal displacement "
                   "zero) on the edges x = 0, x = Lx, y = 0, y = Ly (ids 0 to "
                   "3) of the rectangle, the L-shape and the rectangle with "
-                  "hole only, not on the id " + std::to_string(b) +
-                    " of the edges of the " + prm.geometry.shape_name() +
+                  "hole only, not on the id " +
+                    std::to_string(b) + " of the edges of the " +
+                    prm.geometry.plate.shape_name() +
                     "; the Mindlin model holds it on any edge");
-    prm.check_first_mesh_size(8);
-    prm.use_model_gamma0(60.);
-    prm.check_magnitudes(prm.gamma0 * prm.youngs_modulus / prm.thickness);
-    if (prm.obstacle_is_rigid())
-      prm.check_obstacle_below_supports(-0.5 * prm.thickness);
-    friction = prm.friction;
+    prm.geometry.check_first_mesh_size(8);
+    prm.check_magnitudes(gamma0,
+                         gamma0 * prm.material.youngs_modulus /
+                           prm.geometry.thickness);
+    if (prm.contact.obstacle_is_rigid())
+      prm.check_obstacle_below_supports(-0.5 * prm.geometry.thickness);
+    friction = prm.contact.friction;
     read_parameters(ph);
     make_load_functions();
     make_plate_predictor();
-    if (!prm.exact_solution.empty())
+    if (!prm.reference.exact_solution.empty())
       {
         exact_solution =
-          make_parsed_function<3>(prm.exact_solution, prm.exact_constants, 3,
+          make_parsed_function<3>(prm.reference.exact_solution,
+                                  prm.reference.constants,
+                                  3,
                                   "Reference solution/Exact solution");
         check_finite_on_plate(*exact_solution,
                               "Reference solution/Exact solution",
-                              prm.exact_solution, prm.geometry,
-                              prm.thickness);
+                              prm.reference.exact_solution,
+                              prm.geometry.plate,
+                              prm.geometry.thickness);
       }
   }
 
@@ -75,30 +83,32 @@ namespace NitscheContact
     const auto s = number_to_string;
     std::vector<std::pair<std::string, std::string>> d = {
       {"element", "Q" + std::to_string(degree) + " hexahedra"},
-      {"E", s(prm.youngs_modulus)},
-      {"nu", s(prm.poisson_ratio)},
-      {"thickness", s(prm.thickness)},
-      {"plate", prm.geometry.is_rectangle() ?
-                  s(prm.length_x) + " x " + s(prm.length_y) :
-                  // "(the L-shape ...)" without its parentheses
-                  prm.geometry.description().substr(
-                    1, prm.geometry.description().size() - 2)},
-      {"boundary conditions", prm.geometry.conditions.text()},
-      {"theta", s(prm.theta)},
-      {"gamma0", s(prm.gamma0)},
-      {"r", "gamma0 E / h_n, h_n = |K|/|F| (cell height normal to the "
-            "contact face)"},
-      {"friction", s(prm.friction)},
-      {"obstacle compliance kappa", prm.compliance_text("max(l^4/D, l/E)")},
+      {"E", s(prm.material.youngs_modulus)},
+      {"nu", s(prm.material.poisson_ratio)},
+      {"thickness", s(prm.geometry.thickness)},
+      {"plate",
+       prm.geometry.plate.is_rectangle() ?
+         s(prm.geometry.length_x) + " x " + s(prm.geometry.length_y) :
+         // "(the L-shape ...)" without its parentheses
+         prm.geometry.plate.description().substr(
+           1, prm.geometry.plate.description().size() - 2)},
+      {"boundary conditions", prm.geometry.plate.conditions.text()},
+      {"theta", s(prm.contact.theta)},
+      {"gamma0", s(gamma0)},
+      {"r",
+       "gamma0 E / h_n, h_n = |K|/|F| (cell height normal to the "
+       "contact face)"},
+      {"friction", s(prm.contact.friction)},
+      {"obstacle compliance kappa",
+       prm.contact.compliance_text("max(l^4/D, l/E)")},
       {"contact quadrature",
        std::to_string(contact_quadrature_points) + "x" +
          std::to_string(contact_quadrature_points) +
-         (contact_rule_name == "lobatto" ? " Gauss-Lobatto" :
-                                           " Gauss")},
-      {"load", prm.load_expression + (load_as_traction ?
-                                        " (top traction)" :
-                                        " (body force q/t)")},
-      {"obstacle", prm.obstacle_type},
+         (contact_rule_name == "lobatto" ? " Gauss-Lobatto" : " Gauss")},
+      {"load",
+       prm.load.expression +
+         (load_as_traction ? " (top traction)" : " (body force q/t)")},
+      {"obstacle", prm.obstacle.type},
       {"linear solver", linear_solver.type}};
     if (plate)
       d.emplace_back("start",
@@ -184,10 +194,10 @@ namespace NitscheContact
   void
   ElasticityModel::warn_below_coercivity_bound() const
   {
-    const double bound =
-      (1. + prm.theta) * (1. + prm.theta) / 4. * trace_constant_value;
-    if (prm.gamma0 <= bound && Utilities::MPI::this_mpi_process(comm) == 0)
-      std::cout << "  warning: 'Contact/Nitsche gamma0' = " << prm.gamma0
+    const double bound = (1. + prm.contact.theta) * (1. + prm.contact.theta) /
+                         4. * trace_constant_value;
+    if (gamma0 <= bound && Utilities::MPI::this_mpi_process(comm) == 0)
+      std::cout << "  warning: 'Contact/Nitsche gamma0' = " << gamma0
                 << " is not above the coercivity bound (1+theta)^2/4 C_n = "
                 << bound << " of this mesh and contact quadrature (C_n = "
                 << trace_constant_value
@@ -203,7 +213,7 @@ namespace NitscheContact
   {
     // the tangential theta-terms are in theta_matrix exactly with F > 0:
     // rebuilt by the next setup_cycle() or assemble(), whichever is first
-    if (scale_friction(friction, prm.friction, scale))
+    if (scale_friction(friction, prm.contact.friction, scale))
       theta_matrix_stale = true;
     state_changed();
   }

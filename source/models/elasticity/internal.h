@@ -53,7 +53,7 @@ namespace NitscheContact
           grad[a] = u_gradient[a];
         }
       const dealii::Tensor<1, 3> sn =
-        stress(grad, prm.lambda(), prm.mu()) * n;
+        stress(grad, prm.material.lambda(), prm.material.mu()) * n;
       PointInput in;
       in.normal   = n;
       in.u_n      = u * n;
@@ -62,7 +62,7 @@ namespace NitscheContact
       in.slip     = u - in.u_n * n;
       in.gap      = x[2] - obstacle.height(dealii::Point<2>(x[0], x[1]));
       in.r        = r;
-      in.theta    = prm.theta;
+      in.theta        = prm.contact.theta;
       in.lambda_scale = 1. / (1. + kappa * r);
       in.friction = friction;
       return in;

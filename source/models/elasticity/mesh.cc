@@ -23,20 +23,20 @@ namespace NitscheContact
   void
   ElasticityModel::make_grid(Triangulation3d &tria, const unsigned int cycle) const
   {
-    const double       z0     = -0.5 * prm.thickness;
+    const double       z0     = -0.5 * prm.geometry.thickness;
     const unsigned int factor = refine_through_thickness ? 1u : (1u << cycle);
-    if (prm.geometry.is_rectangle())
+    if (prm.geometry.plate.is_rectangle())
       GridGenerator::subdivided_hyper_rectangle(
         tria,
-        {prm.subdivisions[0] * factor,
-         prm.subdivisions[1] * factor,
-         prm.subdivisions[2]},
+        {prm.geometry.subdivisions[0] * factor,
+         prm.geometry.subdivisions[1] * factor,
+         prm.geometry.subdivisions[2]},
         Point<3>(0., 0., z0),
-        Point<3>(prm.length_x, prm.length_y, -z0),
+        Point<3>(prm.geometry.length_x, prm.geometry.length_y, -z0),
         /*colorize: ids 0..5 = x-, x+, y-, y+, z-, z+*/ true);
     else
       extrude_plate(tria, refine_through_thickness ? 0u : cycle);
-    tria.refine_global(prm.initial_refinement);
+    tria.refine_global(prm.geometry.initial_refinement);
     for (unsigned int step = 0; step < local_refinement_steps; ++step)
       {
         if (refinement_box.empty())
@@ -79,15 +79,19 @@ namespace NitscheContact
     // the plate's mesh (refined in plane) extruded through the thickness
     // in 'Subdivisions'[2] layers; the side faces keep the plate's boundary
     // ids (side_id), the bottom gets contact_id and the top top_id
-    const double     z0 = -0.5 * prm.thickness;
+    const double     z0 = -0.5 * prm.geometry.thickness;
     Triangulation<2> plane;
-    prm.geometry.make_refined_plane(
-      plane, {prm.subdivisions[0], prm.subdivisions[1]}, refinements);
+    prm.geometry.plate.make_refined_plane(plane,
+                                          {prm.geometry.subdivisions[0],
+                                           prm.geometry.subdivisions[1]},
+                                          refinements);
     Triangulation<3> solid;
-    GridGenerator::extrude_triangulation(plane, prm.subdivisions[2] + 1,
-                                         prm.thickness, solid);
+    GridGenerator::extrude_triangulation(plane,
+                                         prm.geometry.subdivisions[2] + 1,
+                                         prm.geometry.thickness,
+                                         solid);
     GridTools::shift(Tensor<1, 3>({0., 0., z0}), solid);
-    const double tolerance = 1e-6 * prm.thickness;
+    const double tolerance = 1e-6 * prm.geometry.thickness;
     for (const auto &face : solid.active_face_iterators())
       if (face->at_boundary())
         {
@@ -99,9 +103,9 @@ namespace NitscheContact
     auto [vertices, cells, faces] = GridTools::get_coarse_mesh_description(solid);
     tria.create_triangulation(vertices, cells, faces);
     std::set<types::boundary_id> sides;
-    for (const types::boundary_id b : prm.geometry.boundary_ids)
+    for (const types::boundary_id b : prm.geometry.plate.boundary_ids)
       sides.insert(side_id(b));
-    prm.geometry.attach_cylinder_manifold(tria, sides, /*manifold id*/ 0);
+    prm.geometry.plate.attach_cylinder_manifold(tria, sides, /*manifold id*/ 0);
   }
 
   void
@@ -147,7 +151,7 @@ namespace NitscheContact
       {
         const std::size_t k = point_of[i];
         AssertThrow(support[i].point.distance(points[k]) <=
-                      1e-12 * prm.geometry.size(),
+                      1e-12 * prm.geometry.plate.size(),
                     ExcMessage("refining in plane: the rebuilt mesh differs"));
         solution[support[i].dof] = values[k][support[i].component];
       }
@@ -197,10 +201,10 @@ namespace NitscheContact
     constraints.reinit(locally_relevant);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
     const FEValuesExtractors::Scalar ux(0), uy(1), uz(2);
-    for (const types::boundary_id e : prm.geometry.boundary_ids)
+    for (const types::boundary_id e : prm.geometry.plate.boundary_ids)
       {
         ComponentMask mask(3, false);
-        switch (prm.boundary_condition(e))
+        switch (prm.geometry.boundary_condition(e))
           {
             case EdgeCondition::clamped:
               mask = ComponentMask(3, true);
@@ -235,7 +239,7 @@ namespace NitscheContact
     two_level.clear();
     if (linear_solver.type == "two-level")
       two_level.initialize(dof_handler, constraints, system_matrix);
-    if (prm.theta != 0.)
+    if (prm.contact.theta != 0.)
       theta_matrix.reinit(locally_owned, locally_owned, dsp, comm);
     else
       theta_matrix.clear();
@@ -253,22 +257,23 @@ namespace NitscheContact
     // the body's compliance at the scale l of the regularisation: that of
     // a plate, l^4/D, where l is large against the thickness, that of an
     // elastic half-space, l/E, where it is small
-    const double l = prm.regularisation_length();
-    kappa          = prm.obstacle_compliance_for(
-      std::max(std::pow(l, 4) / prm.bending_stiffness(), l / prm.youngs_modulus));
+    const double l = prm.contact.regularisation_length;
+    kappa          = prm.contact.obstacle_compliance_for(
+      std::max(std::pow(l, 4) / prm.bending_stiffness(),
+               l / prm.material.youngs_modulus));
   }
 
   void
   ElasticityModel::pin_in_plane_rigid_motions()
   {
     pinned_modes = {{false, false, false}};
-    if (prm.friction > 0. || top_clamped)
+    if (prm.contact.friction > 0. || top_clamped)
       return;
     bool x_symmetry = false, y_symmetry = false;
-    for (const types::boundary_id e : prm.geometry.boundary_ids)
-      if (prm.boundary_condition(e) == EdgeCondition::clamped)
+    for (const types::boundary_id e : prm.geometry.plate.boundary_ids)
+      if (prm.geometry.boundary_condition(e) == EdgeCondition::clamped)
         return;
-      else if (prm.boundary_condition(e) == EdgeCondition::symmetry)
+      else if (prm.geometry.boundary_condition(e) == EdgeCondition::symmetry)
         (e < 2 ? x_symmetry : y_symmetry) = true;
     // a symmetry face x = const (u1 = 0 on it) holds the translation along
     // x1 and the rotation, one y = const the translation along x2 and the
@@ -324,7 +329,7 @@ namespace NitscheContact
         constraints.add_line(global_index);
       return y;
     };
-    const Point<2> middle = prm.geometry.box_center();
+    const Point<2> middle = prm.geometry.plate.box_center();
     const Point<3> centre(middle[0], middle[1], 0.);
     double         y_centre = centre[1];
     if (pinned_modes[0])
@@ -335,8 +340,8 @@ namespace NitscheContact
     if (pinned_modes[2])
       nearest(0,
               Point<3>(middle[0],
-                       y_centre < middle[1] ? prm.geometry.upper[1] :
-                                              prm.geometry.lower[1],
+                       y_centre < middle[1] ? prm.geometry.plate.upper[1] :
+                                              prm.geometry.plate.lower[1],
                        0.));
   }
 } // namespace NitscheContact

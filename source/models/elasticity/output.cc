@@ -25,11 +25,13 @@ namespace NitscheContact
       /// face_means: per active cell (of its contact face), the means of
       /// the pressure, of |Lambda_t| and the contact fraction over the
       /// contact quadrature points, written as constants on the face.
-      ContactPostprocessor(const CommonParameters                  &prm,
-                           const ObstacleSurface                   &obstacle,
-                           const double                             kappa,
+      ContactPostprocessor(const CommonParameters              &prm,
+                           const double                         gamma0,
+                           const ObstacleSurface               &obstacle,
+                           const double                         kappa,
                            const std::array<Vector<double>, 3> &face_means)
         : prm(prm)
+        , gamma0(gamma0)
         , obstacle(obstacle)
         , kappa(kappa)
         , face_means(face_means)
@@ -46,7 +48,7 @@ namespace NitscheContact
         const unsigned int k = cell->active_cell_index();
         // bottom face (face 4 of a hexahedron) of this cell: h_n = |K|/|F|
         const double h_n = cell->measure() / cell->face(4)->measure();
-        const double r   = prm.gamma0 * prm.youngs_modulus / h_n;
+        const double r   = gamma0 * prm.material.youngs_modulus / h_n;
         Tensor<1, 3> n;
         n[2] = -1.;
         for (unsigned int q = 0; q < in.evaluation_points.size(); ++q)
@@ -59,7 +61,7 @@ namespace NitscheContact
                                                 kappa,
                                                 prm,
                                                 obstacle,
-                                                prm.friction);
+                                                prm.contact.friction);
             const PointState st =
               evaluate_contact_point(pi, NonlinearScheme::newton);
             for (unsigned int m = 0; m < 3; ++m)
@@ -96,6 +98,7 @@ namespace NitscheContact
 
     private:
       const CommonParameters              &prm;
+      const double                         gamma0;
       const ObstacleSurface               &obstacle;
       const double                         kappa; ///< obstacle compliance
       const std::array<Vector<double>, 3> &face_means;
@@ -201,7 +204,7 @@ namespace NitscheContact
       interpretation(3, DataComponentInterpretation::component_is_part_of_vector);
 
     {
-      StressPostprocessor stress_post(prm.lambda(), prm.mu());
+      StressPostprocessor stress_post(prm.material.lambda(), prm.material.mu());
       DataOut<3>          data_out;
       data_out.attach_dof_handler(dof_handler);
       data_out.add_data_vector(ghosted, names, DataOut<3>::type_dof_data,
@@ -223,7 +226,8 @@ namespace NitscheContact
       // pressure p = -Lambda_n, |Lambda_t|, and the fraction of the face
       // area with p > 0. Stored per cell, the cell of each contact face.
       const std::array<Vector<double>, 3> face_means = contact_face_means();
-      ContactPostprocessor contact_post(prm, obstacle, kappa, face_means);
+      ContactPostprocessor                contact_post(
+        prm, gamma0, obstacle, kappa, face_means);
       ContactFaces         faces;
       faces.attach_dof_handler(dof_handler);
       faces.add_data_vector(ghosted, names, DataOutFaces<3>::type_dof_data,

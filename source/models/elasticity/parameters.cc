@@ -175,7 +175,7 @@ namespace NitscheContact
     if (linear_solver.type == "two-level")
       check_two_level_mesh();
     if (!refine_through_thickness && !refinement_box.empty() &&
-        local_refinement_steps > 0 && prm.n_cycles > 1)
+        local_refinement_steps > 0 && prm.geometry.n_cycles > 1)
       throw InputError(
         "invalid value 'false' for parameter 'Elasticity/Refine through "
         "thickness' together with 'Local refinement steps' = " +
@@ -217,10 +217,12 @@ namespace NitscheContact
     // outside, plus those inside times 8^steps; p4est's 2:1 balance adds a
     // layer around the box, ignored here), and refuse more than 1e7 cells
     // before any memory is used.
-    const double lo[3] = {prm.geometry.lower[0], prm.geometry.lower[1],
-                          -prm.thickness / 2},
-                 hi[3] = {prm.geometry.upper[0], prm.geometry.upper[1],
-                          prm.thickness / 2};
+    const double lo[3] = {prm.geometry.plate.lower[0],
+                          prm.geometry.plate.lower[1],
+                          -prm.geometry.thickness / 2},
+                 hi[3] = {prm.geometry.plate.upper[0],
+                          prm.geometry.plate.upper[1],
+                          prm.geometry.thickness / 2};
     double fraction = 1.;
     for (unsigned int d = 0; d < 3; ++d)
       {
@@ -231,8 +233,9 @@ namespace NitscheContact
         fraction *= std::max(0., b - a) / (hi[d] - lo[d]);
       }
     const double base =
-      double(prm.geometry.n_coarse_cells(prm.subdivisions)) *
-      prm.subdivisions[2] * std::pow(8., prm.initial_refinement);
+      double(prm.geometry.plate.n_coarse_cells(prm.geometry.subdivisions)) *
+      prm.geometry.subdivisions[2] *
+      std::pow(8., prm.geometry.initial_refinement);
     const double cells =
       base * (1. + fraction * std::pow(8., local_refinement_steps));
     if (cells > 1e7)
@@ -252,14 +255,14 @@ namespace NitscheContact
     // its columns need one cell through the thickness on every cycle and
     // no hanging nodes (doc/design.md)
     std::string why;
-    if (prm.subdivisions[2] != 1)
+    if (prm.geometry.subdivisions[2] != 1)
       why = "'Geometry/Subdivisions' has " +
-            std::to_string(prm.subdivisions[2]) + " cells in x3";
-    else if (prm.initial_refinement > 0)
+            std::to_string(prm.geometry.subdivisions[2]) + " cells in x3";
+    else if (prm.geometry.initial_refinement > 0)
       why = "'Geometry/Initial refinement' = " +
-            std::to_string(prm.initial_refinement) +
+            std::to_string(prm.geometry.initial_refinement) +
             " refines through the thickness";
-    else if (refine_through_thickness && prm.n_cycles > 1)
+    else if (refine_through_thickness && prm.geometry.n_cycles > 1)
       why = "'Elasticity/Refine through thickness' = true refines "
             "through the thickness on cycle 1";
     else if (!refinement_box.empty() && local_refinement_steps > 0)
@@ -276,14 +279,15 @@ namespace NitscheContact
   void
   ElasticityModel::make_load_functions()
   {
-    transverse_load = std::make_unique<TransverseLoad>(prm);
+    transverse_load = std::make_unique<TransverseLoad>(prm.load);
     traction_function =
       make_parsed_function<2>(tangential_traction, "", 2,
                               "Elasticity/Top tangential traction");
     check_finite_on_plate(*traction_function,
                           "Elasticity/Top tangential traction",
-                          tangential_traction, prm.geometry,
-                          prm.thickness);
+                          tangential_traction,
+                          prm.geometry.plate,
+                          prm.geometry.thickness);
     // a clamped top face takes no traction: it would vanish silently
     if (top_clamped && load_as_traction)
       bad_value("Elasticity/Load applied as", "top traction",
@@ -295,11 +299,14 @@ namespace NitscheContact
         for (unsigned int j = 0; j <= 20; ++j)
           for (unsigned int c = 0; c < 2; ++c)
             if (const Point<2> x(
-                  prm.geometry.lower[0] +
-                    (prm.geometry.upper[0] - prm.geometry.lower[0]) * i / 20.,
-                  prm.geometry.lower[1] +
-                    (prm.geometry.upper[1] - prm.geometry.lower[1]) * j / 20.);
-                prm.geometry.contains(x) && traction_function->value(x, c) != 0.)
+                  prm.geometry.plate.lower[0] + (prm.geometry.plate.upper[0] -
+                                                 prm.geometry.plate.lower[0]) *
+                                                  i / 20.,
+                  prm.geometry.plate.lower[1] + (prm.geometry.plate.upper[1] -
+                                                 prm.geometry.plate.lower[1]) *
+                                                  j / 20.);
+                prm.geometry.plate.contains(x) &&
+                traction_function->value(x, c) != 0.)
               bad_value("Elasticity/Top tangential traction",
                         tangential_traction,
                         "the top face is clamped ('Elasticity/Top face = "

@@ -18,10 +18,10 @@ namespace NitscheContact
     if (top_clamped)
       return "the Mindlin plate has no clamped top face; it needs "
              "'Elasticity/Top face = free'";
-    if (prm.load_steps > 1)
+    if (prm.nonlinear.load_steps > 1)
       return "the first cycle starts from the plate's solution under the "
              "whole load, so 'Nonlinear solver/Load steps' = " +
-             std::to_string(prm.load_steps) +
+             std::to_string(prm.nonlinear.load_steps) +
              " would not be used; it needs 'Load steps = 1'";
     return "";
   }
@@ -43,9 +43,10 @@ namespace NitscheContact
     // measured (doc/benchmarks.md): off the rectangle's grid the plate's
     // cells are not alike, and locating the support points in them costs
     // what the Newton iterations the start saves would
-    if (plate_predictor_setting == "auto" && !is_cartesian(prm.geometry.shape))
+    if (plate_predictor_setting == "auto" &&
+        !is_cartesian(prm.geometry.plate.shape))
       {
-        no_predictor_reason = "on the " + prm.geometry.shape_name() +
+        no_predictor_reason = "on the " + prm.geometry.plate.shape_name() +
                               " the plate saves no time; 'Plate predictor = "
                               "true' uses it";
         return;
@@ -69,11 +70,11 @@ namespace NitscheContact
   {
     plate_prm               = prm;
     plate_prm.model         = "mindlin";
-    plate_prm.theta         = 1.;
-    plate_prm.gamma0        = 200.;
-    plate_prm.friction      = 0.;
-    plate_prm.obstacle_level_is_midplane = false;
-    plate_prm.exact_solution.clear();
+    plate_prm.contact.theta              = 1.;
+    plate_prm.contact.gamma0             = 200.;
+    plate_prm.contact.friction           = 0.;
+    plate_prm.obstacle.level_is_midplane = false;
+    plate_prm.reference.exact_solution.clear();
     MindlinModel::Settings settings;
     // the plate's direct solver follows 'Elasticity/Linear solver'
     settings.reuse_factorization     = linear_solver.reuse_factorization;
@@ -84,7 +85,7 @@ namespace NitscheContact
     settings.contact_quadrature = 2;
     settings.contact_rule       = "lobatto";
     settings.quiet              = true;
-    if (prm.geometry.is_rectangle())
+    if (prm.geometry.plate.is_rectangle())
       plate_on_rectangle(settings);
     else
       {
@@ -92,7 +93,8 @@ namespace NitscheContact
         // that its vertices are the in-plane positions of the Q2 support
         // points (for Q3 and up a start close to them), direct solver
         plate_pre_cycles = 0;
-        plate_prm.initial_refinement = prm.initial_refinement + (degree > 1 ? 1 : 0);
+        plate_prm.geometry.initial_refinement =
+          prm.geometry.initial_refinement + (degree > 1 ? 1 : 0);
         settings.multigrid     = false;
         settings.linear_solver = "Amesos_Mumps";
       }
@@ -106,10 +108,10 @@ namespace NitscheContact
   {
     // The plate's Q1 vertices are the in-plane positions of the support
     // points: degree x the in-plane cells of each cycle.
-    const unsigned int mx =
-                         degree * prm.subdivisions[0] << prm.initial_refinement,
-                       my =
-                         degree * prm.subdivisions[1] << prm.initial_refinement;
+    const unsigned int mx = degree * prm.geometry.subdivisions[0]
+                            << prm.geometry.initial_refinement,
+                       my = degree * prm.geometry.subdivisions[1]
+                            << prm.geometry.initial_refinement;
     // Its own nested cycles start from the mesh coarsened k times, the
     // coarsest that is even (for its multigrid) and has at least 8 cells
     // per direction.
@@ -118,11 +120,12 @@ namespace NitscheContact
            my % (4u << plate_pre_cycles) == 0 &&
            std::min(mx, my) / (2u << plate_pre_cycles) >= 8)
       ++plate_pre_cycles;
-    plate_prm.subdivisions  = {mx >> plate_pre_cycles, my >> plate_pre_cycles};
-    plate_prm.initial_refinement = 0;
-    plate_prm.n_cycles      = plate_pre_cycles + prm.n_cycles;
-    settings.multigrid =
-      plate_prm.subdivisions[0] % 2 == 0 && plate_prm.subdivisions[1] % 2 == 0;
+    plate_prm.geometry.subdivisions       = {mx >> plate_pre_cycles,
+                                             my >> plate_pre_cycles};
+    plate_prm.geometry.initial_refinement = 0;
+    plate_prm.geometry.n_cycles = plate_pre_cycles + prm.geometry.n_cycles;
+    settings.multigrid          = plate_prm.geometry.subdivisions[0] % 2 == 0 &&
+                         plate_prm.geometry.subdivisions[1] % 2 == 0;
     settings.linear_solver = settings.multigrid ? "multigrid" : "Amesos_Mumps";
     // (on the paper's plate: 0.16 s direct against 3.7 s multigrid on the
     // 1,587 DoFs of the cold start, 4.2 s against 9.6 s on 94k DoFs)
@@ -154,7 +157,7 @@ namespace NitscheContact
     const std::vector<SupportPoint> support = owned_support_points(dof_handler);
     // the plate once per in-plane position (a Q2 column holds 3 nodes of 3
     // components each): positions equal to round-off share an entry
-    const double scale = 1e9 / prm.geometry.size();
+    const double scale = 1e9 / prm.geometry.plate.size();
     std::map<std::pair<long long, long long>, std::size_t> position;
     std::vector<Point<2>>    in_plane;
     std::vector<std::size_t> index(support.size());
@@ -169,7 +172,8 @@ namespace NitscheContact
         index[k] = it->second;
       }
     const auto   kinematics = plate->plate_kinematics_at(in_plane);
-    const double nu = prm.poisson_ratio, eps = 0.5 * prm.thickness;
+    const double nu         = prm.material.poisson_ratio,
+                 eps        = 0.5 * prm.geometry.thickness;
     for (std::size_t k = 0; k < support.size(); ++k)
       {
         const auto        &v = kinematics[index[k]];

@@ -61,7 +61,7 @@ namespace NitscheContact
       residual.l2_norm(),
       internal.l2_norm(),
       std::abs(load_factor) * load.l2_norm(),
-      prm.allow_non_convergence,
+      prm.nonlinear.allow_non_convergence,
       "Either a rigid motion is restrained by contact alone and is not "
       "held (e.g. the tangential load exceeds the friction limit F * "
       "normal force), or, with friction, the Newton path stalled on "
@@ -92,10 +92,10 @@ namespace NitscheContact
               slip_area += JxW;
             else
               stick_area += JxW;
-            if (prm.friction > 0.)
-              max_ratio =
-                std::max(max_ratio,
-                         st.lambda_t.norm() / (prm.friction * -st.lambda_n));
+            if (prm.contact.friction > 0.)
+              max_ratio = std::max(max_ratio,
+                                   st.lambda_t.norm() /
+                                     (prm.contact.friction * -st.lambda_n));
           }
         // the obstacle acts on the body with the traction
         // Lambda_n n + Lambda_t (the same keys and signs as the
@@ -114,8 +114,8 @@ namespace NitscheContact
       {"max_penetration", all.max_penetration()},
       {"nitsche_trace_constant", trace_constant_value},
       {"relative_residual", relative_residual}};
-    // (collective sums: every rank has the same prm.friction)
-    if (prm.friction > 0.)
+    // (collective sums: every rank has the same prm.contact.friction)
+    if (prm.contact.friction > 0.)
       {
         const auto add = [&](const char *key, const double value) {
           res.extra.emplace_back(key, value);
@@ -195,8 +195,10 @@ namespace NitscheContact
     Triangulation<3>::active_cell_iterator hint;
     for (unsigned int p = 0; p < points.size(); ++p)
       {
-        const Point<3> x(points[p][0], points[p][1], -0.5 * prm.thickness);
-        if (!prm.geometry.contains(points[p]))
+        const Point<3> x(points[p][0],
+                         points[p][1],
+                         -0.5 * prm.geometry.thickness);
+        if (!prm.geometry.plate.contains(points[p]))
           continue;
         try
           {
@@ -262,7 +264,7 @@ namespace NitscheContact
     for (unsigned int p = 0; p < points.size(); ++p)
       {
         const Point<3> x(points[p][0], points[p][1], 0.);
-        if (!prm.geometry.contains(points[p]))
+        if (!prm.geometry.plate.contains(points[p]))
           continue;
         try
           {

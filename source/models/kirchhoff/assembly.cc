@@ -81,7 +81,7 @@ namespace NitscheContact
     else
       in.sigma_n = lambda_eps * op;
     in.r            = kit.r;
-    in.theta        = kit.sigma_terms ? prm.theta : 0.;
+    in.theta        = kit.sigma_terms ? prm.contact.theta : 0.;
     in.lambda_scale = kit.lambda_scale;
     return in;
   }
@@ -264,7 +264,7 @@ namespace NitscheContact
   KirchhoffModel::jacobian_is_symmetric() const
   {
     // theta = 1 (or no sigma_n terms): the kernel Jacobian is symmetric.
-    return !kit.sigma_terms || prm.theta == 1.;
+    return !kit.sigma_terms || prm.contact.theta == 1.;
   }
 
 
@@ -274,7 +274,7 @@ namespace NitscheContact
   {
     // theta = 1 makes the kernel terms a gradient; without sigma_n terms
     // (pure penalty) theta plays no role and the penalty is a gradient too.
-    return !kit.sigma_terms || prm.theta == 1.;
+    return !kit.sigma_terms || prm.contact.theta == 1.;
   }
 
 
@@ -300,7 +300,7 @@ namespace NitscheContact
     // 1/2 a(U,U) - (f,U) from quadrature-point values of the Hessian (no
     // cancellation between the large entries of the bending matrix).
     const unsigned int nq = quadrature.size();
-    const double       nu = prm.poisson_ratio;
+    const double       nu   = prm.material.poisson_ratio;
     double             bulk = 0., work = 0.;
     double             u[16];
     for (unsigned int c = 0; c < cells.size(); ++c)

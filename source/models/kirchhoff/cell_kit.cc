@@ -30,7 +30,8 @@ namespace NitscheContact
   void
   KirchhoffModel::set_kernel_parameters()
   {
-    kappa = prm.obstacle_compliance_for(std::pow(prm.regularisation_length(), 4) / D);
+    kappa = prm.contact.obstacle_compliance_for(
+      std::pow(prm.contact.regularisation_length, 4) / D);
     if (formulation == Formulation::gsv)
       {
         if (alpha_D > 0.)
@@ -50,7 +51,7 @@ namespace NitscheContact
       }
     else
       {
-        kit.r = prm.gamma0 * prm.youngs_modulus / prm.thickness;
+        kit.r = gamma0 * prm.material.youngs_modulus / prm.geometry.thickness;
         kit.lambda_scale = 1. / (1. + kappa * kit.r);
         kit.sigma_terms  = true;
       }
@@ -93,7 +94,7 @@ namespace NitscheContact
       }
 
     // Bending: a(u,v) = int D [(1-nu) d2u : d2v + nu Lap u Lap v].
-    const double nu = prm.poisson_ratio;
+    const double nu = prm.material.poisson_ratio;
     kit.bending.reinit(16, 16);
     for (unsigned int q = 0; q < nq; ++q)
       for (unsigned int i = 0; i < 16; ++i)
@@ -149,7 +150,7 @@ namespace NitscheContact
     // on a uniform mesh it is computed once per quadrature point and state.
     PointInput in;
     in.r            = kit.r;
-    in.theta        = kit.sigma_terms ? prm.theta : 0.;
+    in.theta        = kit.sigma_terms ? prm.contact.theta : 0.;
     in.lambda_scale = kit.lambda_scale;
     PointState inactive, active;
     active.dlambda_n = kit.lambda_scale;
@@ -204,22 +205,27 @@ namespace NitscheContact
     if (formulation == Formulation::nitsche && !bias_warned)
       {
         bias_warned = true;
-        const std::string w = theta_bending_bias_warning(
-          prm, prm.thickness, "Kirchhoff plate with Nitsche contact");
+        const std::string w =
+          theta_bending_bias_warning(prm,
+                                     gamma0,
+                                     prm.geometry.thickness,
+                                     "Kirchhoff plate with Nitsche contact");
         if (!w.empty())
           std::cout << w << std::endl;
       }
-    if (kit.inverse_constant > 0. && prm.theta != -1. && !coercivity_warned)
+    if (kit.inverse_constant > 0. && prm.contact.theta != -1. &&
+        !coercivity_warned)
       {
         const double bound =
-          4. / ((1. + prm.theta) * (1. + prm.theta) * kit.inverse_constant / D);
+          4. / ((1. + prm.contact.theta) * (1. + prm.contact.theta) *
+                kit.inverse_constant / D);
         if (alpha_D >= bound)
           {
             coercivity_warned = true;
             std::cout << "  warning: 'Kirchhoff/Stabilisation alpha' = "
                       << alpha_D
                       << " is not below the coercivity bound alpha*D < "
-                      << bound << " of theta = " << prm.theta
+                      << bound << " of theta = " << prm.contact.theta
                       << " on these cells (inverse constant C_I = "
                       << kit.inverse_constant / D
                       << " D): the method may return a wrong contact set; "
@@ -236,9 +242,10 @@ namespace NitscheContact
   {
     // (cached: parsing is slow)
     const unsigned int nq = quadrature.size();
-    const double shift = prm.obstacle_level_is_midplane ? 0. : 0.5 * prm.thickness;
-    psi_is_constant = (prm.obstacle_type == "plane");
-    psi_constant    = prm.obstacle_level + shift;
+    const double       shift =
+      prm.obstacle.level_is_midplane ? 0. : 0.5 * prm.geometry.thickness;
+    psi_is_constant = (prm.obstacle.type == "plane");
+    psi_constant    = prm.obstacle.level + shift;
     load_values.clear();
     psi_values.clear();
     if (!load_is_constant)
@@ -261,7 +268,7 @@ namespace NitscheContact
                     transverse_load->value(x, cells[c]->material_id());
                   if (!std::isfinite(load_values[c * nq + q]))
                     non_finite_at_point("Load/Transverse load",
-                                        prm.load_expression,
+                                        prm.load.expression,
                                         load_values[c * nq + q],
                                         x);
                 }

@@ -91,14 +91,14 @@ namespace NitscheContact
                                  ParameterHandler       &param,
                                  MPI_Comm                comm)
     : prm(common)
+    // 'auto' (used by 'Contact formulation = nitsche'): the theta-terms
+    // then change the bending stiffness by 0.45 %
+    , gamma0(common.contact.gamma0_or(200.))
     , comm(comm)
-    , obstacle(common)
+    , obstacle(common.obstacle)
     , dof_handler(triangulation)
     , quadrature(6)
   {
-    // 'Nitsche gamma0 = auto' (used by 'Contact formulation = nitsche'):
-    // the theta-terms then change the bending stiffness by 0.45 %
-    prm.use_model_gamma0(200.);
     if (dealii::Utilities::MPI::n_mpi_processes(comm) > 1)
       throw InputError(
         "invalid value 'kirchhoff' for parameter 'Model' with " +
@@ -106,18 +106,18 @@ namespace NitscheContact
         " MPI processes: the Kirchhoff model runs on one process (serial "
         "mesh and sparse direct solver); run it without mpirun or with -np "
         "1");
-    if (prm.friction != 0.)
+    if (prm.contact.friction != 0.)
       bad_value("Contact/Friction coefficient",
-                number_to_string(prm.friction),
+                number_to_string(prm.contact.friction),
                 "the Kirchhoff model is frictionless; allowed is 0");
 
     read_parameters(param);
 
-    transverse_load  = std::make_unique<TransverseLoad>(prm);
+    transverse_load  = std::make_unique<TransverseLoad>(prm.load);
     load_is_constant = transverse_load->is_constant(load_constant);
 
     D          = prm.bending_stiffness();
-    lambda_eps = prm.lambda() * 0.5 * prm.thickness;
+    lambda_eps = prm.material.lambda() * 0.5 * prm.geometry.thickness;
     quadrature = QGauss<2>(n_quadrature);
   }
 
@@ -132,7 +132,7 @@ namespace NitscheContact
                    formulation == Formulation::gsv ?
                      "gsv (Gustafsson-Stenberg-Videman stabilised)" :
                      "nitsche (Kirchhoff kinematics in the 3D Nitsche term)");
-    d.emplace_back("theta", number_to_string(prm.theta));
+    d.emplace_back("theta", number_to_string(prm.contact.theta));
     if (formulation == Formulation::gsv)
       {
         d.emplace_back("alpha*D", number_to_string(alpha_D));
@@ -143,16 +143,17 @@ namespace NitscheContact
       }
     else
       {
-        d.emplace_back("gamma0", number_to_string(prm.gamma0));
-        d.emplace_back("r", "gamma0 E / t = " +
-                              number_to_string(prm.gamma0 * prm.youngs_modulus /
-                                  prm.thickness));
+        d.emplace_back("gamma0", number_to_string(gamma0));
+        d.emplace_back("r",
+                       "gamma0 E / t = " +
+                         number_to_string(gamma0 * prm.material.youngs_modulus /
+                                          prm.geometry.thickness));
       }
     d.emplace_back("obstacle compliance kappa",
-                   prm.compliance_text("l^4/D"));
+                   prm.contact.compliance_text("l^4/D"));
     d.emplace_back("bending stiffness D", number_to_string(D));
     d.emplace_back("obstacle convention",
-                   prm.obstacle_level_is_midplane ?
+                   prm.obstacle.level_is_midplane ?
                      "mid-plane (w >= z_obs)" :
                      "bottom face (w >= z_obs + t/2)");
     d.emplace_back("quadrature points per direction", number_to_string(n_quadrature));
@@ -173,13 +174,14 @@ namespace NitscheContact
   {
     // the built-in shapes: boundary ids 0, 1, 2, 3 on x = 0, x = Lx,
     // y = 0, y = Ly
-    prm.make_coarse_mesh(triangulation);
-    grid_lower = prm.geometry.lower;
-    grid_upper = prm.geometry.upper;
-    if (prm.geometry.shape == PlateShape::mesh_file)
+    prm.geometry.make_coarse_mesh(triangulation);
+    grid_lower = prm.geometry.plate.lower;
+    grid_upper = prm.geometry.plate.upper;
+    if (prm.geometry.plate.shape == PlateShape::mesh_file)
       {
-        order_vertices_along_axes(triangulation, prm.geometry.mesh_file_name());
-        triangulation.refine_global(prm.initial_refinement);
+        order_vertices_along_axes(triangulation,
+                                  prm.geometry.plate.mesh_file_name());
+        triangulation.refine_global(prm.geometry.initial_refinement);
         // the grid of the first cell's size over the mesh's bounding box
         const Tensor<1, 2> h =
           FE_BicubicHermite<2>::cell_extents(triangulation.begin_active());
@@ -188,7 +190,7 @@ namespace NitscheContact
             const Tensor<1, 2> e = FE_BicubicHermite<2>::cell_extents(cell);
             if (std::abs(e[0] - h[0]) > 1e-8 * h[0] ||
                 std::abs(e[1] - h[1]) > 1e-8 * h[1])
-              refuse_cell(prm.geometry.mesh_file_name(),
+              refuse_cell(prm.geometry.plate.mesh_file_name(),
                           "the cell with the vertices " + vertex_list(cell) +
                             " is not of the size " + number_to_string(h[0]) +
                             " x " + number_to_string(h[1]) +
@@ -197,19 +199,19 @@ namespace NitscheContact
         const double positions_x = std::round((grid_upper[0] - grid_lower[0]) / h[0]),
                      positions_y = std::round((grid_upper[1] - grid_lower[1]) / h[1]);
         if (positions_x * positions_y > 1e7)
-          refuse_cell(prm.geometry.mesh_file_name(),
-                      "the grid of its cells over the mesh's bounding box has " +
-                        number_to_string(positions_x) + " x " +
-                        number_to_string(positions_y) +
-                        " positions, more than 1e7");
+          refuse_cell(
+            prm.geometry.plate.mesh_file_name(),
+            "the grid of its cells over the mesh's bounding box has " +
+              number_to_string(positions_x) + " x " +
+              number_to_string(positions_y) + " positions, more than 1e7");
         nx = std::max(1., positions_x);
         ny = std::max(1., positions_y);
       }
     else
       {
-        triangulation.refine_global(prm.initial_refinement);
-        nx = prm.subdivisions[0] << prm.initial_refinement;
-        ny = prm.subdivisions[1] << prm.initial_refinement;
+        triangulation.refine_global(prm.geometry.initial_refinement);
+        nx = prm.geometry.subdivisions[0] << prm.geometry.initial_refinement;
+        ny = prm.geometry.subdivisions[1] << prm.geometry.initial_refinement;
       }
   }
 
@@ -241,9 +243,9 @@ namespace NitscheContact
   KirchhoffModel::make_constraints()
   {
     constraints.clear();
-    for (const auto b : prm.geometry.boundary_ids)
+    for (const auto b : prm.geometry.plate.boundary_ids)
       {
-        const EdgeCondition e = prm.boundary_condition(b);
+        const EdgeCondition e = prm.geometry.boundary_condition(b);
         HermiteTools::make_zero_boundary_constraints(
           dof_handler,
           b,
@@ -276,10 +278,11 @@ namespace NitscheContact
           std::abs(x - ix) > 1e-8 || std::abs(y - iy) > 1e-8 ||
           grid[ix + nx * iy].state() == IteratorState::valid;
         // (the built-in shapes are made of the grid's cells)
-        AssertThrow(!off_grid || prm.geometry.shape == PlateShape::mesh_file,
+        AssertThrow(!off_grid ||
+                      prm.geometry.plate.shape == PlateShape::mesh_file,
                     ExcInternalError());
         if (off_grid)
-          refuse_cell(prm.geometry.mesh_file_name(),
+          refuse_cell(prm.geometry.plate.mesh_file_name(),
                       "the cell with the vertices " + vertex_list(cell) +
                         " does not fill a position of the grid of " +
                         number_to_string(hx) + " x " + number_to_string(hy) +

@@ -58,7 +58,8 @@ namespace NitscheContact
       constrained[i] = constraints.is_constrained(i);
     if (!multigrid)
       multigrid = std::make_unique<HermiteMultigrid>(fe, comm);
-    const double hx = prm.length_x / nx, hy = prm.length_y / ny;
+    const double hx = prm.geometry.length_x / nx,
+                 hy = prm.geometry.length_y / ny;
     multigrid->setup(nx, ny, Tensor<1, 2>({hx, hy}), vertex_dofs, constrained);
   }
 
@@ -138,7 +139,7 @@ namespace NitscheContact
           status.is_settled(),
           krylov_tolerance,
           loose_krylov_tolerance,
-          prm.nonlinear.tolerance,
+          prm.nonlinear.settings.tolerance,
           status.is_settled() ? energy_norm(increment) : 0.,
           status.is_settled() ? energy_norm(solution) : 0.);
         try

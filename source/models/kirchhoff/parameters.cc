@@ -151,12 +151,12 @@ namespace NitscheContact
       exact_hessian_text     = hess;
       if (!grad.empty())
         exact_gradient = make_parsed_function<2>(grad,
-                                                 prm.exact_constants,
+                                                 prm.reference.constants,
                                                  2,
                                                  "Kirchhoff/Exact gradient");
       if (!hess.empty())
         exact_hessian = make_parsed_function<2>(hess,
-                                                prm.exact_constants,
+                                                prm.reference.constants,
                                                 3,
                                                 "Kirchhoff/Exact Hessian");
     }
@@ -202,19 +202,22 @@ namespace NitscheContact
     // mid-plane, and a compliant obstacle may lie above a supported edge
     std::vector<PlateShape> shapes = cartesian_shapes;
     shapes.push_back(PlateShape::mesh_file);
-    require_shape(prm.geometry, shapes, "the model 'kirchhoff'",
+    require_shape(prm.geometry.plate,
+                  shapes,
+                  "the model 'kirchhoff'",
                   "its element is C1 on a uniform grid of axis-parallel "
                   "rectangles only (a mesh file of such cells); the Mindlin "
                   "and the membrane models solve every shape");
     if (use_multigrid)
-      require_shape(prm.geometry, {PlateShape::rectangle},
+      require_shape(prm.geometry.plate,
+                    {PlateShape::rectangle},
                     "'Kirchhoff/Linear solver/Type = multigrid'",
                     "use 'Type = direct'");
-    prm.check_first_mesh_size(4);
-    prm.check_magnitudes(0.);
-    if (prm.obstacle_is_rigid())
+    prm.geometry.check_first_mesh_size(4);
+    prm.check_magnitudes(0., 0.);
+    if (prm.contact.obstacle_is_rigid())
       prm.check_obstacle_below_supports(
-        prm.obstacle_level_is_midplane ? 0. : -0.5 * prm.thickness);
+        prm.obstacle.level_is_midplane ? 0. : -0.5 * prm.geometry.thickness);
     if (!(alpha_D >= 0.))
       bad_value("Kirchhoff/Stabilisation alpha", number_to_string(alpha_D), "must be >= 0");
     if (!(krylov_tolerance > 0. && krylov_tolerance < 1.))
@@ -223,7 +226,9 @@ namespace NitscheContact
                 "must be in (0, 1)");
     // (the common check does not cover the Nitsche parameter of this model)
     if (formulation == Formulation::nitsche)
-      prm.check_magnitudes(prm.gamma0 * prm.youngs_modulus / prm.thickness);
+      prm.check_magnitudes(gamma0,
+                           gamma0 * prm.material.youngs_modulus /
+                             prm.geometry.thickness);
     if (use_multigrid && formulation == Formulation::nitsche)
       bad_value("Kirchhoff/Linear solver/Type",
                 "multigrid",
@@ -234,13 +239,13 @@ namespace NitscheContact
                 "point smoother fails (measured: 260 Krylov iterations per "
                 "Newton step, no Newton convergence); use 'direct'");
     if (formulation == Formulation::gsv && alpha_D == 0. &&
-        prm.obstacle_compliance == 0.)
+        prm.contact.obstacle_compliance == 0.)
       bad_value("Kirchhoff/Stabilisation alpha",
                 "0",
                 "alpha = 0 is the pure penalty method, which needs "
                 "'Contact/Obstacle compliance' > 0 or 'auto'; use alpha*D > 0 "
                 "for a rigid obstacle");
-    if (prm.subdivisions.size() < 2)
+    if (prm.geometry.subdivisions.size() < 2)
       bad_value("Geometry/Subdivisions", "", "expected 'nx, ny'");
     require_one_layer(prm, "Kirchhoff");
   }
@@ -251,15 +256,16 @@ namespace NitscheContact
   KirchhoffModel::check_exact_solution(const std::string &exact_gradient_text,
                                        const std::string &exact_hessian_text)
   {
-    if (!prm.exact_solution.empty())
-      exact_value = make_parsed_function<2>(prm.exact_solution,
-                                            prm.exact_constants,
-                                            1,
-                                            "Reference solution/Exact solution");
+    if (!prm.reference.exact_solution.empty())
+      exact_value =
+        make_parsed_function<2>(prm.reference.exact_solution,
+                                prm.reference.constants,
+                                1,
+                                "Reference solution/Exact solution");
     for (const auto &[f, entry, text] :
          {std::make_tuple(exact_value.get(),
                           std::string("Reference solution/Exact solution"),
-                          prm.exact_solution),
+                          prm.reference.exact_solution),
           std::make_tuple(exact_gradient.get(),
                           std::string("Kirchhoff/Exact gradient"),
                           exact_gradient_text),
@@ -267,8 +273,8 @@ namespace NitscheContact
                           std::string("Kirchhoff/Exact Hessian"),
                           exact_hessian_text)})
       if (f != nullptr)
-        check_finite_on_plate(*f, entry, text, prm.geometry,
-                              prm.thickness, true);
+        check_finite_on_plate(
+          *f, entry, text, prm.geometry.plate, prm.geometry.thickness, true);
     if ((exact_gradient || exact_hessian) && !exact_value)
       bad_value(exact_gradient ? "Kirchhoff/Exact gradient" :
                                  "Kirchhoff/Exact Hessian",

@@ -219,7 +219,7 @@ namespace NitscheContact
     // Exact derivatives: user-given, or fourth-order central
     // differences of the parsed value (FunctionParser only offers
     // low-order differences).
-    const double delta = 1e-3 * prm.geometry.size();
+    const double delta = 1e-3 * prm.geometry.plate.size();
     const auto   fd_derivatives =
       [&](const Point<2> &x, Tensor<1, 2> &grad, Tensor<2, 2> &hess) {
         double f[5][5];

@@ -31,7 +31,7 @@ namespace NitscheContact
     in.gap          = -contact_psi[k];
     in.sigma_n      = load_factor * contact_load[k] + tension * laplacian;
     in.r            = cell_r[c];
-    in.theta        = prm.theta;
+    in.theta        = prm.contact.theta;
     in.lambda_scale = 1. / (1. + kappa * cell_r[c]);
     return in;
   }
@@ -137,13 +137,13 @@ namespace NitscheContact
     const IndexSet owned = complete_index_set(dof_handler.n_dofs());
     TrilinosWrappers::MPI::Vector b(owned, comm), x(owned, comm);
     std::copy(rhs.begin(), rhs.end(), b.begin());
-    const unsigned int iterations = factorization.solve(
-      system_matrix,
-      x,
-      b,
-      ReusedFactorization::change_of_newton_matrix(status.is_settled() ? 0 : 1,
-                                                   false),
-      /*symmetric*/ prm.theta == 1.);
+    const unsigned int iterations =
+      factorization.solve(system_matrix,
+                          x,
+                          b,
+                          ReusedFactorization::change_of_newton_matrix(
+                            status.is_settled() ? 0 : 1, false),
+                          /*symmetric*/ prm.contact.theta == 1.);
     std::copy(x.begin(), x.end(), increment.begin());
     constraints.distribute(increment);
     base = solution;

@@ -26,7 +26,7 @@ namespace NitscheContact
                                MPI_Comm                comm)
     : prm(common)
     , comm(comm)
-    , obstacle(common)
+    , obstacle(common.obstacle)
     , dof_handler(triangulation)
     , factorization(ReusedFactorization::Settings{
         "Amesos_Mumps",
@@ -42,9 +42,9 @@ namespace NitscheContact
         std::to_string(Utilities::MPI::n_mpi_processes(comm)) +
         " MPI processes: the membrane model runs on one process; run it "
         "without mpirun or with -np 1");
-    if (prm.friction != 0.)
+    if (prm.contact.friction != 0.)
       bad_value("Contact/Friction coefficient",
-                number_to_string(prm.friction),
+                number_to_string(prm.contact.friction),
                 "the membrane model is frictionless; allowed is 0");
     read_parameters(param);
     fe              = std::make_unique<FE_Q<2>>(degree);
@@ -54,11 +54,11 @@ namespace NitscheContact
       contact_rule(contact_rule_name,
                    contact_points_per_direction,
                    "Membrane/Contact quadrature points");
-    transverse_load = std::make_unique<TransverseLoad>(prm);
-    if (!prm.exact_solution.empty())
+    transverse_load = std::make_unique<TransverseLoad>(prm.load);
+    if (!prm.reference.exact_solution.empty())
       exact_solution =
-        make_parsed_function<2>(prm.exact_solution,
-                                prm.exact_constants,
+        make_parsed_function<2>(prm.reference.exact_solution,
+                                prm.reference.constants,
                                 1,
                                 "Reference solution/Exact solution");
   }
@@ -74,15 +74,15 @@ namespace NitscheContact
       {"element", "Q" + std::to_string(degree) + " Lagrange (FE_Q)"},
       {"contact formulation",
        "GSV stabilised Nitsche, sigma_n = q + T Delta_h w"},
-      {"theta", number_to_string(prm.theta)},
+      {"theta", number_to_string(prm.contact.theta)},
       {"tension T", number_to_string(tension)},
       {"alpha", number_to_string(alpha)},
       {"r", "T/(alpha h_K^2), h_K = longest cell side"},
-      {"obstacle compliance kappa", prm.compliance_text("l^2/T")},
+      {"obstacle compliance kappa", prm.contact.compliance_text("l^2/T")},
       {"obstacle convention", "w >= z_obs (a membrane has no thickness)"},
       {"contact quadrature",
-       contact_rule_name + ", " +
-         std::to_string(contact_points_per_direction) + " per direction"},
+       contact_rule_name + ", " + std::to_string(contact_points_per_direction) +
+         " per direction"},
       {"linear solver", "MUMPS (L D L^T when theta = 1)"}};
     return d;
   }
@@ -93,8 +93,8 @@ namespace NitscheContact
   MembraneModel::make_grid()
   {
     // the plate's shape, its boundary ids and curved-edge manifolds
-    prm.make_coarse_mesh(triangulation);
-    triangulation.refine_global(prm.initial_refinement);
+    prm.geometry.make_coarse_mesh(triangulation);
+    triangulation.refine_global(prm.geometry.initial_refinement);
   }
 
 
@@ -109,9 +109,9 @@ namespace NitscheContact
     // symmetry parts are natural (dw/dn = 0 for symmetry, T dw/dn = 0 for
     // free)
     constraints.clear();
-    for (const auto b : prm.geometry.boundary_ids)
-      if (prm.boundary_condition(b) == EdgeCondition::clamped ||
-          prm.boundary_condition(b) == EdgeCondition::simply_supported)
+    for (const auto b : prm.geometry.plate.boundary_ids)
+      if (prm.geometry.boundary_condition(b) == EdgeCondition::clamped ||
+          prm.geometry.boundary_condition(b) == EdgeCondition::simply_supported)
         VectorTools::interpolate_boundary_values(
           *mapping, dof_handler, b, Functions::ZeroFunction<2>(), constraints);
     constraints.close();
@@ -166,8 +166,10 @@ namespace NitscheContact
             contact_load[c * nc + q] =
               transverse_load->value(x, cell->material_id());
             if (!std::isfinite(contact_load[c * nc + q]))
-              non_finite_at_point("Load/Transverse load", prm.load_expression,
-                                  contact_load[c * nc + q], x);
+              non_finite_at_point("Load/Transverse load",
+                                  prm.load.expression,
+                                  contact_load[c * nc + q],
+                                  x);
           }
 
         bulk_values.reinit(cell);
@@ -177,8 +179,10 @@ namespace NitscheContact
             const double f = transverse_load->value(
               bulk_values.quadrature_point(q), cell->material_id());
             if (!std::isfinite(f))
-              non_finite_at_point("Load/Transverse load", prm.load_expression,
-                                  f, bulk_values.quadrature_point(q));
+              non_finite_at_point("Load/Transverse load",
+                                  prm.load.expression,
+                                  f,
+                                  bulk_values.quadrature_point(q));
             bulk_load[c * nb + q] = f;
             load_integral += f * bulk_values.JxW(q);
             for (unsigned int i = 0; i < fe->n_dofs_per_cell(); ++i)
@@ -190,19 +194,19 @@ namespace NitscheContact
       }
     if (bad_heights > 0)
       throw InputError(obstacle.non_finite_message(bad_heights, &bad_point));
-    kappa =
-      prm.obstacle_compliance_for(std::pow(prm.regularisation_length(), 2) / tension);
+    kappa = prm.contact.obstacle_compliance_for(
+      std::pow(prm.contact.regularisation_length, 2) / tension);
 
     inverse_constant = gsv_inverse_constant();
-    const double bound =
-      4. / ((1. + prm.theta) * (1. + prm.theta) * inverse_constant);
-    if (inverse_constant > 0. && prm.theta != -1. && alpha >= bound &&
+    const double bound = 4. / ((1. + prm.contact.theta) *
+                               (1. + prm.contact.theta) * inverse_constant);
+    if (inverse_constant > 0. && prm.contact.theta != -1. && alpha >= bound &&
         !coercivity_warned)
       {
         coercivity_warned = true;
         std::cout << "  warning: 'Membrane/Stabilisation alpha' = " << alpha
                   << " is not below the coercivity bound alpha < " << bound
-                  << " of theta = " << prm.theta
+                  << " of theta = " << prm.contact.theta
                   << " on these cells (inverse constant C_I = "
                   << inverse_constant
                   << "): the method may return a wrong contact set; give a "

@@ -82,26 +82,28 @@ namespace NitscheContact
     if (!(alpha > 0.) || !std::isfinite(alpha))
       bad_value("Membrane/Stabilisation alpha", number_to_string(alpha),
                 "a finite number > 0");
-    if (prm.subdivisions.size() > 2 && prm.subdivisions[2] != 1)
+    if (prm.geometry.subdivisions.size() > 2 &&
+        prm.geometry.subdivisions[2] != 1)
       bad_value("Geometry/Subdivisions",
-                std::to_string(prm.subdivisions[0]) + ", " +
-                  std::to_string(prm.subdivisions[1]) + ", " +
-                  std::to_string(prm.subdivisions[2]),
+                std::to_string(prm.geometry.subdivisions[0]) + ", " +
+                  std::to_string(prm.geometry.subdivisions[1]) + ", " +
+                  std::to_string(prm.geometry.subdivisions[2]),
                 "a membrane is a surface without cells through a thickness; "
                 "give 'nx, ny'");
-    prm.check_first_mesh_size(4);
+    prm.geometry.check_first_mesh_size(4);
     // a rigid obstacle above a supported edge (w = 0) leaves no solution
-    if (prm.obstacle_is_rigid())
+    if (prm.contact.obstacle_is_rigid())
       prm.check_obstacle_below_supports(0.);
-    if (!prm.exact_solution.empty())
-      check_finite_on_plate(*make_parsed_function<2>(prm.exact_solution,
-                                                     prm.exact_constants,
-                                                     1,
-                                                     "Reference solution/Exact solution"),
-                            "Reference solution/Exact solution",
-                            prm.exact_solution,
-                            prm.geometry,
-                            prm.thickness,
-                            true);
+    if (!prm.reference.exact_solution.empty())
+      check_finite_on_plate(
+        *make_parsed_function<2>(prm.reference.exact_solution,
+                                 prm.reference.constants,
+                                 1,
+                                 "Reference solution/Exact solution"),
+        "Reference solution/Exact solution",
+        prm.reference.exact_solution,
+        prm.geometry.plate,
+        prm.geometry.thickness,
+        true);
   }
 } // namespace NitscheContact

@@ -67,7 +67,8 @@ namespace NitscheContact
     Vector<double>                          u(fe->n_dofs_per_cell());
     for (unsigned int k = 0; k < points.size(); ++k)
       {
-        const auto [cell, unit] = locate_on_plate(cache, prm.geometry, points[k], hint);
+        const auto [cell, unit] =
+          locate_on_plate(cache, prm.geometry.plate, points[k], hint);
         if (cell == triangulation.end())
           continue;
         hint = cell;
@@ -113,7 +114,8 @@ namespace NitscheContact
     Triangulation<2>::active_cell_iterator hint;
     for (unsigned int k = 0; k < points.size(); ++k)
       {
-        const auto found = locate_on_plate(cache, prm.geometry, points[k], hint);
+        const auto found =
+          locate_on_plate(cache, prm.geometry.plate, points[k], hint);
         if (found.first == triangulation.end())
           continue;
         hint = found.first;
@@ -194,7 +196,7 @@ namespace NitscheContact
   MembraneModel::compute_errors(CycleResults &res) const
   {
     const ExactWithGradient exact(*exact_solution,
-                                  1e-3 * prm.geometry.size());
+                                  1e-3 * prm.geometry.plate.size());
     const QGauss<2>         quadrature(degree + 3);
     Vector<float>           cell_errors(triangulation.n_active_cells());
     for (const auto &[name, norm] :

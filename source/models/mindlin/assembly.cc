@@ -46,7 +46,9 @@ namespace NitscheContact
             const double    value = transverse_load->value(x, cell->material_id());
             if (!std::isfinite(value))
               non_finite_at_point("Load/Transverse load",
-                                  prm.load_expression, value, x);
+                                  prm.load.expression,
+                                  value,
+                                  x);
             load_integral += value * values.JxW(q);
             for (unsigned int i = 0; i < n; ++i)
               if (fe.system_to_component_index(i).first == w_component)
@@ -112,8 +114,9 @@ namespace NitscheContact
     pass.status.resize(cell_grid.size() * contact_quadrature.size());
     // 'Stick step on slip reversal' (see the 3D model): only on the serial
     // path that builds the matrix
-    pass.track_q   = build_matrix && friction > 0. &&
-                   scheme == NonlinearScheme::newton && prm.stick_on_reversal;
+    pass.track_q = build_matrix && friction > 0. &&
+                   scheme == NonlinearScheme::newton &&
+                   prm.nonlinear.stick_on_reversal;
     pass.compare_q = pass.track_q && previous_q.size() == pass.status.size();
     pass.qs.resize(pass.track_q ? pass.status.size() : 0);
     if (build_matrix)
@@ -292,8 +295,8 @@ namespace NitscheContact
     // between the large shear entries of the stiffness matrix, whose
     // contribution is small for a thin plate), minus the load work.
     const unsigned int n  = fe.n_dofs_per_cell();
-    const double       nu = prm.poisson_ratio, E = prm.youngs_modulus,
-                 t = prm.thickness;
+    const double       nu = prm.material.poisson_ratio,
+                 E = prm.material.youngs_modulus, t = prm.geometry.thickness;
     const double D  = prm.bending_stiffness();
     const double S  = settings.shear_factor * mu * t;
     const double Dm = E * t / (1. - nu * nu);

@@ -220,9 +220,9 @@ namespace NitscheContact
   {
     ElementData       &d   = scratch.data;
     const unsigned int n   = fe.n_dofs_per_cell();
-    const double       nu  = prm.poisson_ratio;
-    const double       E   = prm.youngs_modulus;
-    const double       t   = prm.thickness;
+    const double       nu  = prm.material.poisson_ratio;
+    const double       E   = prm.material.youngs_modulus;
+    const double       t   = prm.geometry.thickness;
     const double       D   = prm.bending_stiffness();
     const double       S   = settings.shear_factor * mu * t;
     const double       Dm  = E * t / (1. - nu * nu);
@@ -357,7 +357,7 @@ namespace NitscheContact
     // The linear theta-terms that the kernel adds at every point:
     // -(theta/r) (sigma_n(u) sigma_n(v) [+ sigma_t(u).sigma_t(v)]).
     const unsigned int n        = fe.n_dofs_per_cell();
-    const double       t_over_r = prm.theta / r;
+    const double       t_over_r = prm.contact.theta / r;
     m.reinit(n, n);
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int j = 0; j < n; ++j)
@@ -413,7 +413,7 @@ namespace NitscheContact
     // -w <= g = -eps - z_obs; 'mid-plane': w >= z_obs, g = -z_obs.
     const unsigned int nq = contact_quadrature.size();
     gaps.resize(cell_grid.size() * nq);
-    const double  shift       = prm.obstacle_level_is_midplane ? 0. : eps;
+    const double  shift       = prm.obstacle.level_is_midplane ? 0. : eps;
     unsigned long bad_heights = 0;
     Point<2>      bad_point;
     FEValues<2>   points(mapping, fe, contact_quadrature,
@@ -455,7 +455,7 @@ namespace NitscheContact
     in.gap       = gap;
     in.normal[2] = -1.;
     in.r         = r;
-    in.theta     = prm.theta;
+    in.theta        = prm.contact.theta;
     in.friction  = friction;
     in.lambda_scale = lambda_scale;
     return in;

@@ -62,16 +62,19 @@ namespace NitscheContact
     // settled status, but never looser than 1e-6, beyond which the
     // semismooth Newton path of the MITC4 plate derails.
     constexpr double loose     = 1e-6;
-    const double     tolerance = HermiteMultigrid::newton_step_tolerance(
-      last_changed == 0,
-      settings.krylov_tolerance,
-      loose,
-      prm.nonlinear.tolerance,
-      energy_norm(increment),
-      energy_norm(solution));
+    const double     tolerance =
+      HermiteMultigrid::newton_step_tolerance(last_changed == 0,
+                                              settings.krylov_tolerance,
+                                              loose,
+                                              prm.nonlinear.settings.tolerance,
+                                              energy_norm(increment),
+                                              energy_norm(solution));
     try
       {
-        return multigrid->solve(residual, x, tolerance, prm.theta == 1.);
+        return multigrid->solve(residual,
+                                x,
+                                tolerance,
+                                prm.contact.theta == 1.);
       }
     catch (const SolverControl::NoConvergence &e)
       {
@@ -206,7 +209,7 @@ namespace NitscheContact
     std::vector<bool>  constrained(4 * nvx * nvy, false);
     for (unsigned int e = 0; e < 4; ++e)
       {
-        const EdgeCondition c = prm.boundary_condition(e);
+        const EdgeCondition c          = prm.geometry.boundary_condition(e);
         const bool value_zero = (c == EdgeCondition::clamped ||
                                  c == EdgeCondition::simply_supported);
         const bool normal_zero =
@@ -351,7 +354,7 @@ namespace NitscheContact
     const unsigned int nq = contact_quadrature.size();
     PointInput         in;
     in.r         = r;
-    in.theta     = prm.theta;
+    in.theta        = prm.contact.theta;
     in.normal[2] = -1.;
     in.lambda_scale = lambda_scale;
     PointState active;

@@ -30,15 +30,18 @@ namespace NitscheContact
     // cell refines into 4, the Nitsche parameter is gamma0 E / t, and a
     // compliant obstacle may lie above a supported edge
     if (settings.multigrid)
-      require_shape(common.geometry, {PlateShape::rectangle},
+      require_shape(common.geometry.plate,
+                    {PlateShape::rectangle},
                     "'Mindlin/Linear solver/Type = multigrid'",
                     "use 'Type = direct'");
-    common.check_first_mesh_size(4);
-    common.check_magnitudes(prm.gamma0 * common.youngs_modulus /
-                            common.thickness);
-    if (common.obstacle_is_rigid())
-      common.check_obstacle_below_supports(
-        common.obstacle_level_is_midplane ? 0. : -0.5 * common.thickness);
+    common.geometry.check_first_mesh_size(4);
+    common.check_magnitudes(gamma0,
+                            gamma0 * common.material.youngs_modulus /
+                              common.geometry.thickness);
+    if (common.contact.obstacle_is_rigid())
+      common.check_obstacle_below_supports(common.obstacle.level_is_midplane ?
+                                             0. :
+                                             -0.5 * common.geometry.thickness);
   }
 
 
@@ -47,21 +50,23 @@ namespace NitscheContact
                              const Settings         &given,
                              MPI_Comm                comm)
     : prm(common)
+    // 'auto': with theta = +-1 the theta-terms then change the bending
+    // stiffness by 0.45 % (doc/mindlin.md)
+    , gamma0(common.contact.gamma0_or(200.))
     , comm(comm)
     , settings(given)
-    , eps(0.5 * common.thickness)
-    , lambda(common.lambda())
-    , mu(common.mu())
+    , eps(0.5 * common.geometry.thickness)
+    , lambda(common.material.lambda())
+    , mu(common.material.mu())
     , r(0.)
     , fe(FE_Q<2>(settings.shear == Shear::mitc9 ? 2 : 1),
          settings.membrane ? 5 : 3)
     , mapping(fe.degree)
     , tying(fe, settings.shear)
     , dof_handler(triangulation)
-    , contact_quadrature(
-        contact_rule(settings.contact_rule,
-                     settings.contact_quadrature,
-                     "Mindlin/Contact quadrature points"))
+    , contact_quadrature(contact_rule(settings.contact_rule,
+                                      settings.contact_quadrature,
+                                      "Mindlin/Contact quadrature points"))
     , bulk_quadrature(QGauss<2>(fe.degree + 1))
     , direct_solver(ReusedFactorization::Settings{
         settings.multigrid ? std::string("Amesos_Mumps") :
@@ -76,12 +81,9 @@ namespace NitscheContact
         "with the 3x3 Gauss-Lobatto points 1.6 on the clamped paper test "
         "and up to about 2.3; doc/mindlin.md) "
         "or use theta = -1"})
-    , obstacle(common)
+    , obstacle(common.obstacle)
   {
-    // 'Nitsche gamma0 = auto': with theta = +-1 the theta-terms then change
-    // the bending stiffness by 0.45 % (doc/mindlin.md)
-    prm.use_model_gamma0(200.);
-    friction = common.friction;
+    friction = common.contact.friction;
     for (const Point<2> &p : bulk_quadrature.get_points())
       bulk_weights.push_back(tying.weights(p));
     for (const Point<2> &p : contact_quadrature.get_points())
@@ -94,27 +96,31 @@ namespace NitscheContact
         "(serial mesh and direct solver); run it without mpirun");
     require_one_layer(common, "Mindlin");
 
-    if (settings.multigrid && common.initial_refinement == 0 &&
-        (common.subdivisions[0] % 2 != 0 || common.subdivisions[1] % 2 != 0))
+    if (settings.multigrid && common.geometry.initial_refinement == 0 &&
+        (common.geometry.subdivisions[0] % 2 != 0 ||
+         common.geometry.subdivisions[1] % 2 != 0))
       bad_value("Mindlin/Linear solver/Type",
                 "multigrid",
                 "needs an even number of cells per direction (its coarse "
                 "levels live on the mesh coarsened once); 'Geometry/"
                 "Subdivisions' is " +
-                  std::to_string(common.subdivisions[0]) + ", " +
-                  std::to_string(common.subdivisions[1]) +
+                  std::to_string(common.geometry.subdivisions[0]) + ", " +
+                  std::to_string(common.geometry.subdivisions[1]) +
                   " with 'Initial refinement = 0'");
-    transverse_load = std::make_unique<TransverseLoad>(common);
-    if (!common.exact_solution.empty())
+    transverse_load = std::make_unique<TransverseLoad>(common.load);
+    if (!common.reference.exact_solution.empty())
       {
         exact_solution =
-          make_parsed_function<2>(common.exact_solution,
-                                  common.exact_constants,
+          make_parsed_function<2>(common.reference.exact_solution,
+                                  common.reference.constants,
                                   3,
                                   "Reference solution/Exact solution");
         check_finite_on_plate(*exact_solution,
                               "Reference solution/Exact solution",
-                              common.exact_solution, common.geometry, common.thickness, true);
+                              common.reference.exact_solution,
+                              common.geometry.plate,
+                              common.geometry.thickness,
+                              true);
       }
   }
 
@@ -136,18 +142,19 @@ namespace NitscheContact
     d.emplace_back("membrane unknowns",
                    settings.membrane ? "true" : "false");
     d.emplace_back("simple support", settings.soft_support ? "soft" : "hard");
-    d.emplace_back("thickness", number_to_string(prm.thickness));
-    d.emplace_back("E", number_to_string(prm.youngs_modulus));
-    d.emplace_back("nu", number_to_string(prm.poisson_ratio));
-    d.emplace_back("boundary conditions", prm.geometry.conditions.text());
-    d.emplace_back("theta", number_to_string(prm.theta));
-    d.emplace_back("gamma0", number_to_string(prm.gamma0));
+    d.emplace_back("thickness", number_to_string(prm.geometry.thickness));
+    d.emplace_back("E", number_to_string(prm.material.youngs_modulus));
+    d.emplace_back("nu", number_to_string(prm.material.poisson_ratio));
+    d.emplace_back("boundary conditions", prm.geometry.plate.conditions.text());
+    d.emplace_back("theta", number_to_string(prm.contact.theta));
+    d.emplace_back("gamma0", number_to_string(gamma0));
     d.emplace_back("Nitsche length h_n",
                    settings.nitsche_length_is_thickness ? "thickness" :
                                                           "cell size");
-    d.emplace_back("friction coefficient", number_to_string(prm.friction));
+    d.emplace_back("friction coefficient",
+                   number_to_string(prm.contact.friction));
     d.emplace_back("obstacle convention",
-                   prm.obstacle_level_is_midplane ? "mid-plane" :
+                   prm.obstacle.level_is_midplane ? "mid-plane" :
                                                     "bottom face");
     d.emplace_back("contact quadrature",
                    std::to_string(settings.contact_quadrature) + "x" +
@@ -156,7 +163,7 @@ namespace NitscheContact
                                                            " Gauss"));
     d.emplace_back("linear solver", settings.linear_solver);
     d.emplace_back("obstacle compliance kappa",
-                   prm.compliance_text("l^4/D"));
+                   prm.contact.compliance_text("l^4/D"));
     return d;
   }
 
@@ -166,8 +173,8 @@ namespace NitscheContact
   MindlinModel::make_grid()
   {
     // boundary ids 0, 1, 2, 3 on x = 0, x = Lx, y = 0, y = Ly
-    prm.make_coarse_mesh(triangulation);
-    triangulation.refine_global(prm.initial_refinement);
+    prm.geometry.make_coarse_mesh(triangulation);
+    triangulation.refine_global(prm.geometry.initial_refinement);
   }
 
 
@@ -182,7 +189,7 @@ namespace NitscheContact
     // size and index the cells by their (i, j) position. The shared
     // element data rely on every cell being the hx x hy rectangle [v0, v0
     // + (hx, hy)] with the reference orientation, which is checked here.
-    uniform_cells = is_cartesian(prm.geometry.shape);
+    uniform_cells = is_cartesian(prm.geometry.plate.shape);
     cell_grid.clear();
     cell_at.clear();
     cell_size = 0.;
@@ -223,18 +230,21 @@ namespace NitscheContact
     base.reinit(dof_handler.n_dofs());
     increment.reinit(dof_handler.n_dofs());
 
-    const double h_n = settings.nitsche_length_is_thickness ?
-                         prm.thickness :
-                         cell_size;
-    r = prm.gamma0 * prm.youngs_modulus / h_n;
-    kappa = prm.obstacle_compliance_for(std::pow(prm.regularisation_length(), 4) /
-                                   prm.bending_stiffness());
+    const double h_n =
+      settings.nitsche_length_is_thickness ? prm.geometry.thickness : cell_size;
+    r     = gamma0 * prm.material.youngs_modulus / h_n;
+    kappa = prm.contact.obstacle_compliance_for(
+      std::pow(prm.contact.regularisation_length, 4) / prm.bending_stiffness());
     lambda_scale = 1. / (1. + kappa * r);
     {
       const std::string w =
-        theta_bending_bias_warning(prm, h_n, "Mindlin plate",
-                                   prm.friction > 0. ? settings.shear_factor :
-                                                       0.);
+        theta_bending_bias_warning(prm,
+                                   gamma0,
+                                   h_n,
+                                   "Mindlin plate",
+                                   prm.contact.friction > 0. ?
+                                     settings.shear_factor :
+                                     0.);
       if (!w.empty() && w != bias_warning && !settings.quiet)
         std::cout << w << std::endl;
       bias_warning = w;
@@ -248,10 +258,10 @@ namespace NitscheContact
   MindlinModel::index_uniform_grid()
   {
     const unsigned int factor = 1u << (triangulation.n_levels() - 1);
-    nx                        = prm.subdivisions[0] * factor;
-    ny                        = prm.subdivisions[1] * factor;
-    hx = prm.length_x / nx;
-    hy = prm.length_y / ny;
+    nx                        = prm.geometry.subdivisions[0] * factor;
+    ny                        = prm.geometry.subdivisions[1] * factor;
+    hx                        = prm.geometry.length_x / nx;
+    hy                        = prm.geometry.length_y / ny;
     std::vector<DoFHandler<2>::active_cell_iterator> grid(
       static_cast<std::size_t>(nx) * ny);
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -292,9 +302,9 @@ namespace NitscheContact
     for (const EdgeCondition condition :
          {EdgeCondition::clamped, EdgeCondition::simply_supported,
           EdgeCondition::symmetry})
-      for (const types::boundary_id id : prm.geometry.boundary_ids)
+      for (const types::boundary_id id : prm.geometry.plate.boundary_ids)
         {
-          if (prm.boundary_condition(id) != condition)
+          if (prm.geometry.boundary_condition(id) != condition)
             continue;
           std::vector<bool> mask(n_comp, false);
           if (condition == EdgeCondition::clamped)
@@ -331,7 +341,7 @@ namespace NitscheContact
   {
     // the tangential theta-terms are in the constant part exactly with F > 0:
     // rebuilt by the next setup_cycle() or assemble(), whichever is first
-    if (scale_friction(friction, prm.friction, scale))
+    if (scale_friction(friction, prm.contact.friction, scale))
       constant_part_stale = true;
     state_changed();
   }

@@ -140,10 +140,10 @@ namespace NitscheContact
     }
     s.membrane_setting = prm.get("Membrane unknowns");
     if (s.membrane_setting == "auto")
-      s.membrane = common.friction > 0.;
+      s.membrane = common.contact.friction > 0.;
     else
       s.membrane = (s.membrane_setting == "true");
-    if (!s.membrane && common.friction > 0.)
+    if (!s.membrane && common.contact.friction > 0.)
       bad_value("Mindlin/Membrane unknowns", s.membrane_setting,
                 "with 'Contact/Friction coefficient' > 0 the slip of the "
                 "lower face u_t = ubar - (t/2) phi involves the membrane "
@@ -153,8 +153,9 @@ namespace NitscheContact
     s.contact_quadrature  = prm.get_integer("Contact quadrature points");
     s.contact_rule        = prm.get("Contact quadrature rule");
     if (s.contact_rule == "auto")
-      s.contact_rule =
-        common.friction > 0. && s.shear != Shear::mitc9 ? "gauss" : "lobatto";
+      s.contact_rule = common.contact.friction > 0. && s.shear != Shear::mitc9 ?
+                         "gauss" :
+                         "lobatto";
     prm.enter_subsection("Linear solver");
     s.multigrid               = prm.get("Type") == "multigrid";
     s.linear_solver           = s.multigrid ? "multigrid" :
@@ -190,7 +191,7 @@ namespace NitscheContact
                 "the multigrid serves the Q1 elements (its coarse space "
                 "is the Kirchhoff plate prolongated to the Q1 vertices); "
                 "with 'Shear treatment = MITC9' use 'Type = direct'");
-    if (s.multigrid && (common.friction > 0. || s.membrane))
+    if (s.multigrid && (common.contact.friction > 0. || s.membrane))
       bad_value("Mindlin/Linear solver/Type",
                 "multigrid",
                 "the multigrid serves the frictionless plate without "

@@ -95,7 +95,7 @@ namespace NitscheContact
       residual.l2_norm(),
       internal.l2_norm(),
       std::abs(load_factor) * load.l2_norm(),
-      prm.allow_non_convergence,
+      prm.nonlinear.allow_non_convergence,
       "Most often |U| is dominated by a large rigid motion (a free plate "
       "lifted far by the obstacle), whose round-off in the gap u_n - g "
       "swamps the deformation: lift the plate less or support an edge",
@@ -284,7 +284,7 @@ namespace NitscheContact
     if (!uniform_cells)
       {
         const auto [cell, unit] =
-          locate_on_plate(*point_cache, prm.geometry, p);
+          locate_on_plate(*point_cache, prm.geometry.plate, p);
         if (cell == triangulation.end())
           return dof_handler.end();
         unit_point = unit;
@@ -294,7 +294,12 @@ namespace NitscheContact
                                                    &dof_handler);
       }
     const auto where =
-      UniformPlateGrid(nx, ny, Point<2>(), Point<2>(prm.length_x, prm.length_y), &cell_at).locate(p);
+      UniformPlateGrid(nx,
+                       ny,
+                       Point<2>(),
+                       Point<2>(prm.geometry.length_x, prm.geometry.length_y),
+                       &cell_at)
+        .locate(p);
     if (!where)
       return dof_handler.end();
     unit_point = where->unit;
@@ -309,10 +314,13 @@ namespace NitscheContact
     // cell_grid holds every active cell, on a uniform grid in grid order
     if (!uniform_cells)
       return cell->active_cell_index();
-    const auto where = UniformPlateGrid(nx, ny, Point<2>(),
-                                        Point<2>(prm.length_x, prm.length_y),
-                                        &cell_at)
-                         .locate(cell->center());
+    const auto where =
+      UniformPlateGrid(nx,
+                       ny,
+                       Point<2>(),
+                       Point<2>(prm.geometry.length_x, prm.geometry.length_y),
+                       &cell_at)
+        .locate(cell->center());
     return where->cell;
   }
 
@@ -409,17 +417,20 @@ namespace NitscheContact
         // the central difference of the nodal rotations)
         double       div = 0.;
         unsigned int m   = 0;
-        const double dx = 1e-6 * (uniform_cells ? hx : prm.geometry.size()),
-                     dy = 1e-6 * (uniform_cells ? hy : prm.geometry.size());
+        const double dx =
+                       1e-6 * (uniform_cells ? hx : prm.geometry.plate.size()),
+                     dy =
+                       1e-6 * (uniform_cells ? hy : prm.geometry.plate.size());
         for (const double sx : {-1., 1.})
           for (const double sy : {-1., 1.})
             {
               // (a point off the plate is not evaluated)
-              const Point<2> q(
-                std::min(std::max(points[k][0] + sx * dx, prm.geometry.lower[0]),
-                         prm.geometry.upper[0]),
-                std::min(std::max(points[k][1] + sy * dy, prm.geometry.lower[1]),
-                         prm.geometry.upper[1]));
+              const Point<2>        q(std::min(std::max(points[k][0] + sx * dx,
+                                                 prm.geometry.plate.lower[0]),
+                                        prm.geometry.plate.upper[0]),
+                               std::min(std::max(points[k][1] + sy * dy,
+                                                 prm.geometry.plate.lower[1]),
+                                        prm.geometry.plate.upper[1]));
               std::array<double, 4> u;
               if (evaluate(q, u))
                 div += u[3], ++m;

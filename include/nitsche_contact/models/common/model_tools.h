@@ -54,6 +54,7 @@ namespace NitscheContact
   /// pass shear_factor = kappa_s > 0 to include it (in the 1 % test too).
   std::string
   theta_bending_bias_warning(const CommonParameters &prm,
+                             double                  gamma0,
                              double                  h_n,
                              const std::string      &model,
                              double                  shear_factor = 0.);

@@ -55,7 +55,7 @@ namespace NitscheContact
     ModelDescription
     describe() const override
     {
-      return {"elasticity", description(), weak_penalty_warnings(prm.gamma0)};
+      return {"elasticity", description(), weak_penalty_warnings(gamma0)};
     }
     ProblemSize
     problem_size() const override
@@ -93,7 +93,7 @@ namespace NitscheContact
     bool
     has_energy() const override
     {
-      return prm.theta == 1. && friction == 0.;
+      return prm.contact.theta == 1. && friction == 0.;
     }
     void
     prepare_line_slope() override;
@@ -187,9 +187,10 @@ namespace NitscheContact
     void
     make_load_functions();
 
-    /// the common parameters, with 'Nitsche gamma0 = auto' resolved to
-    /// this model's value
-    CommonParameters prm;
+    const CommonParameters &prm;
+    /// 'Contact/Nitsche gamma0' in use; 'auto' is the 3D model's 60: above the
+    /// trace constants of its Gauss-Lobatto contact points
+    const double     gamma0;
     MPI_Comm         comm;
 
     // "Elasticity" subsection
@@ -422,7 +423,7 @@ namespace NitscheContact
     const dealii::TrilinosWrappers::SparseMatrix &
     constant_matrix() const
     {
-      return prm.theta != 0. ? theta_matrix : bulk_matrix;
+      return prm.contact.theta != 0. ? theta_matrix : bulk_matrix;
     }
 
     /// prepare_line_search(): phi'(t) = line_constant + t line_linear +

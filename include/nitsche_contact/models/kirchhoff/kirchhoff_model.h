@@ -78,7 +78,7 @@ namespace NitscheContact
       return {"kirchhoff",
               description(),
               formulation == Formulation::nitsche ?
-                weak_penalty_warnings(prm.gamma0) :
+                weak_penalty_warnings(gamma0) :
                 std::vector<std::string>()};
     }
     std::vector<std::pair<std::string, std::string>>
@@ -390,9 +390,10 @@ namespace NitscheContact
 
     // ----- common parameters, communicator
 
-    /// the common parameters, with 'Nitsche gamma0 = auto' resolved to
-    /// this model's value
-    CommonParameters prm;
+    const CommonParameters &prm;
+    /// 'Contact/Nitsche gamma0' in use; 'auto' is 200: the theta-terms then
+    /// change the bending stiffness by 0.45 %
+    const double            gamma0;
     MPI_Comm                comm;
 
     // ----- the "Kirchhoff" subsection

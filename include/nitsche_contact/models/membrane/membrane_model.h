@@ -83,7 +83,7 @@ namespace NitscheContact
     bool
     has_energy() const override
     {
-      return prm.theta == 1.;
+      return prm.contact.theta == 1.;
     }
     /// The sparse direct solver is exact up to round-off.
     bool

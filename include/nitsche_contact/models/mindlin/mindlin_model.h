@@ -80,7 +80,7 @@ namespace NitscheContact
     ModelDescription
     describe() const override
     {
-      return {"mindlin", description(), weak_penalty_warnings(prm.gamma0)};
+      return {"mindlin", description(), weak_penalty_warnings(gamma0)};
     }
     ProblemSize
     problem_size() const override
@@ -101,7 +101,7 @@ namespace NitscheContact
     bool
     has_energy() const override
     {
-      return prm.theta == 1. && friction == 0.;
+      return prm.contact.theta == 1. && friction == 0.;
     }
     double
     load_work() const override
@@ -469,9 +469,10 @@ namespace NitscheContact
     std::vector<std::pair<std::string, double>>
     solution_errors() const;
 
-    /// the common parameters, with 'Nitsche gamma0 = auto' resolved to
-    /// this model's value
-    CommonParameters prm;
+    const CommonParameters &prm;
+    /// 'Contact/Nitsche gamma0' in use; 'auto' is 200: the theta-terms then
+    /// change the bending stiffness by 0.45 %
+    const double            gamma0;
     MPI_Comm                comm;
     const Settings          settings;
 
