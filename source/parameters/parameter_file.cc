@@ -101,8 +101,9 @@ namespace NitscheContact
                          "' does not exist, is not a regular file or "
                          "cannot be read");
       open_files.push_back(canonical);
-      std::vector<std::string> section;
-      std::string              text, rest;
+      std::vector<std::string>  section;
+      std::vector<unsigned int> section_lines;
+      std::string               text, rest;
       unsigned int             count = 0, number = 0;
       const auto               where = [&]() {
         return "line " + std::to_string(number) + " of '" + file + "'";
@@ -112,13 +113,17 @@ namespace NitscheContact
           if (text.empty())
             continue;
           if (after_keyword(text, "subsection", rest))
-            section.push_back(rest);
+            {
+              section.push_back(rest);
+              section_lines.push_back(number);
+            }
           else if (text == "end" || text == "END")
             {
               if (section.empty())
                 throw InputError("'end' without a subsection (" + where() +
                                  ")");
               section.pop_back();
+              section_lines.pop_back();
             }
           else if (after_keyword(text, "set", rest))
             {
@@ -127,7 +132,8 @@ namespace NitscheContact
                 throw InputError("'" + text + "' (" + where() +
                                  ") has no '=': write 'set Name = value'");
               ParameterLine p;
-              p.section = section;
+              p.section       = section;
+              p.section_lines = section_lines;
               p.name    = trim(rest.substr(0, eq));
               p.value   = trim(rest.substr(eq + 1));
               p.file    = file;
@@ -214,15 +220,17 @@ namespace NitscheContact
     {
       const boost::property_tree::ptree *node = &root;
       std::string                        path;
-      for (const auto &s : line.section)
+      for (std::size_t k = 0; k < line.section.size(); ++k)
         {
-          const auto child = node->find(s);
+          const std::string &s     = line.section[k];
+          const auto         child = node->find(s);
           if (child == node->not_found() ||
               child->second.find("pattern_description") !=
                 child->second.not_found())
-            throw InputError("unknown subsection '" + path + s + "' (" +
-                             line.where() + ")" +
-                             suggestion(*node, s, false) + list_hint);
+            throw InputError("unknown subsection '" + path + s + "' (line " +
+                             std::to_string(line.section_lines[k]) + " of '" +
+                             line.file + "')" + suggestion(*node, s, false) +
+                             list_hint);
           path += s + "/";
           node = &child->second;
         }

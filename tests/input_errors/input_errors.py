@@ -36,8 +36,8 @@ def execute(argv):
 CASES = [
     ("unknown entry", "subsection Material\n  set Youngs modulus = 1\nend",
      ["'Material/Youngs modulus'", "line 10", "did you mean 'Young's modulus'"]),
-    ("misspelled subsection", "subsection Materail\n  set Poisson ratio = 0.3\nend",
-     ["Materail"]),
+    ("misspelled subsection", "subsection Materail\n\n  set Poisson ratio = 0.3\nend",
+     ["unknown subsection 'Materail'", "line 9", "did you mean 'Material'"]),
     ("unknown top-level entry", "set Modell = elasticity", ["Modell"]),
     ("two-level solver, two cell layers",
      "subsection Geometry\n  set Subdivisions = 4, 4, 2\nend\n"

@@ -15,7 +15,8 @@ namespace NitscheContact
   /// One `set` line of a parameter file.
   struct ParameterLine
   {
-    std::vector<std::string> section; // the subsections around it
+    std::vector<std::string>  section; // the subsections around it
+    std::vector<unsigned int> section_lines; // the lines that open them
     std::string              name;
     std::string              value;
     std::string              file;
