@@ -186,7 +186,6 @@ namespace NitscheContact
                               const bool        build_matrix)
   {
     const unsigned int  n      = fe.n_dofs_per_cell();
-    const unsigned int  nq     = contact_quadrature.size();
     FullMatrix<double> *matrix = build_matrix ? &scratch.matrix : nullptr;
     const auto         &cell   = cell_grid[c];
     // (on a uniform grid the shared data; else the cell's contact part,
