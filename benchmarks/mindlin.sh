@@ -4,6 +4,7 @@
 # phase for each refinement cycle, in Release. Usage:
 #   benchmarks/mindlin.sh [path/to/nitsche-contact] [number of cycles] [lobatto|gauss]
 #                         [direct|multigrid] [subdivisions] [mitc4|mitc9] [kappa]
+#                         [nitsche|gsv]
 # The third argument selects the contact points: 'lobatto' (default, as the
 # program without friction: 2x2 Gauss-Lobatto = the cell vertices) or
 # 'gauss' (4x4 Gauss points; doc/mindlin.md). The fourth the linear
@@ -17,7 +18,9 @@
 # The seventh the obstacle's compliance 'Contact/Obstacle compliance'
 # (default 0: rigid; 'auto': the program's default, doc/formulations.md;
 # 1e-5: an elastic obstacle whose penalty length the 640^2 mesh resolves,
-# doc/mindlin.md).
+# doc/mindlin.md). The eighth 'Mindlin/Contact formulation' (default
+# nitsche, the paper's form as in the .prm; gsv the plate's equilibrium
+# stress, doc/mindlin.md).
 # The program must be built with CMAKE_BUILD_TYPE=Release.
 set -e
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -27,6 +30,11 @@ rule=${3:-lobatto}
 solver=${4:-direct}
 element=${6:-mitc4}
 kappa=${7:-0}
+formulation=${8:-nitsche}
+case "$formulation" in
+  nitsche|gsv) ;;
+  *) echo "benchmarks/mindlin.sh: contact formulation must be 'nitsche' or 'gsv', not '$formulation'" >&2; exit 1 ;;
+esac
 case "$kappa" in
   auto) ;;
   ''|*[!0-9.eE+-]*) echo "benchmarks/mindlin.sh: kappa must be 'auto' or a number >= 0, not '$kappa'" >&2; exit 1 ;;
@@ -61,6 +69,7 @@ subsection Contact
   set Obstacle compliance = $kappa
 end
 subsection Mindlin
+  set Contact formulation       = $formulation
   set Contact quadrature points = $points
   set Contact quadrature rule   = $rule
   subsection Linear solver
@@ -89,6 +98,7 @@ import json, sys
 s = json.load(open(sys.argv[1]))
 print("Mindlin model, paper test (clamped [0,10]^2, t = 0.01, q = -0.02, obstacle -1)")
 print("linear solver: %s" % s["parameters"].get("linear solver", "?"))
+print("contact formulation: %s" % s["parameters"].get("contact formulation", "?"))
 print("obstacle compliance kappa: %s" % s["parameters"].get("obstacle compliance kappa", "0 (rigid)"))
 print("%5s %9s %5s %7s %8s %8s %8s %8s %8s %9s %10s" % ("cycle", "dofs", "its", "krylov",
       "setup", "assembly", "solve", "postproc", "total", "force", "w(1,5)"))

@@ -9,8 +9,9 @@ and the figures.
                                        [--pinned]
 
 Runs parameters/{paper_3d, paper_mindlin, paper_mindlin_mitc9,
-paper_kirchhoff, kirchhoff_nitsche}.prm with a common output block (same probes, profile line
-and field grid), reads each summary.json, profile.csv and field.csv, and
+paper_kirchhoff, kirchhoff_nitsche}.prm, the two Mindlin files also with
+'Contact formulation = gsv', with a common output block (same probes,
+profile line and field grid), reads each summary.json, profile.csv and field.csv, and
 writes into --out:
   comparison.md, comparison.csv   probe deflections, contact area, total
                                   reaction, min/max deflection, DoFs,
@@ -45,12 +46,19 @@ import subprocess
 import sys
 import time
 
+# (key, label, parameter file, entries appended to it): the Mindlin plate
+# with the paper's contact stress and with the plate's equilibrium stress
+# ('Contact formulation = gsv' and its gamma0 = auto, doc/mindlin.md)
+GSV = ("subsection Mindlin\n  set Contact formulation = gsv\nend\n"
+       "subsection Contact\n  set Nitsche gamma0 = auto\nend\n")
 RUNS = [
-    ("elasticity", "3D elasticity, Q2, Nitsche", "paper_3d.prm"),
-    ("mindlin", "Mindlin-Reissner, MITC4, Nitsche", "paper_mindlin.prm"),
-    ("mindlin_mitc9", "Mindlin-Reissner, MITC9, Nitsche", "paper_mindlin_mitc9.prm"),
-    ("kirchhoff_gsv", "Kirchhoff-Love, BFS, GSV", "paper_kirchhoff.prm"),
-    ("kirchhoff_nitsche", "Kirchhoff-Love, BFS, Nitsche", "kirchhoff_nitsche.prm"),
+    ("elasticity", "3D elasticity, Q2, Nitsche", "paper_3d.prm", ""),
+    ("mindlin", "Mindlin-Reissner, MITC4, Nitsche", "paper_mindlin.prm", ""),
+    ("mindlin_gsv", "Mindlin-Reissner, MITC4, GSV", "paper_mindlin.prm", GSV),
+    ("mindlin_mitc9", "Mindlin-Reissner, MITC9, Nitsche", "paper_mindlin_mitc9.prm", ""),
+    ("mindlin_mitc9_gsv", "Mindlin-Reissner, MITC9, GSV", "paper_mindlin_mitc9.prm", GSV),
+    ("kirchhoff_gsv", "Kirchhoff-Love, BFS, GSV", "paper_kirchhoff.prm", ""),
+    ("kirchhoff_nitsche", "Kirchhoff-Love, BFS, Nitsche", "kirchhoff_nitsche.prm", ""),
 ]
 def pinned_settings(prm_file):
     """The entries that turn a shipped paper file into the discretisation
@@ -86,8 +94,8 @@ def main():
     os.makedirs(args.out, exist_ok=True)
 
     rows = []
-    for key, label, prm in RUNS:
-        text = open(os.path.join(here, prm)).read()
+    for key, label, prm, entries in RUNS:
+        text = open(os.path.join(here, prm)).read() + entries
         outdir = os.path.abspath(os.path.join(args.out, key))
         text += "\nsubsection Output\n  set Directory = %s\n" % outdir
         text += "  set Probe points = %s\n" % "; ".join("%g, %g" % p for p in PROBES)

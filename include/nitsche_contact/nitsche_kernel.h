@@ -82,6 +82,10 @@ namespace NitscheContact
     Tensor<1, 3> sigma_t;      ///< tangential stress
     Tensor<1, 3> normal;       ///< unit outward normal of the contact face
     double       r        = 1.; ///< Nitsche parameter (stress per length)
+    /// Nitsche parameter of the tangential terms: r in the 3D model and
+    /// the paper's plate form; the Mindlin plate's 'gsv' scales r with the
+    /// shear stiffness and keeps the paper's value here (doc/mindlin.md)
+    double       r_t      = 1.;
     double       theta    = 1.; ///< Nitsche variant 1, 0, -1
     double       friction = 0.; ///< Coulomb coefficient F >= 0
     /// Factor c in Lambda_n = c [s_n]_- (and in its derivative). 1 for a
@@ -121,7 +125,7 @@ namespace NitscheContact
 
     if (in.friction > 0.)
       {
-        st.q   = in.sigma_t - in.r * in.slip;
+        st.q   = in.sigma_t - in.r_t * in.slip;
         st.tau = -in.friction * st.lambda_n;
         // tangential projector I - n (x) n
         Tensor<2, 3> pt;
@@ -248,9 +252,10 @@ namespace NitscheContact
                          dealii::FullMatrix<double>          *cell_matrix,
                          dealii::Vector<double>              &cell_residual)
   {
-    const unsigned int n        = shapes.size();
-    const double       t_over_r = in.theta / in.r;
-    const bool         friction = in.friction > 0.;
+    const unsigned int n          = shapes.size();
+    const double       t_over_r   = in.theta / in.r;
+    const double       t_over_r_t = in.theta / in.r_t;
+    const bool         friction   = in.friction > 0.;
 
     // Residual.
     for (unsigned int i = 0; i < n; ++i)
@@ -259,8 +264,8 @@ namespace NitscheContact
         double                  v  = -t_over_r * in.sigma_n * si.sigma_n -
                    st.lambda_n * (si.u_n - t_over_r * si.sigma_n);
         if (friction)
-          v += -t_over_r * (in.sigma_t * si.sigma_t) -
-               st.lambda_t * (si.u_t - t_over_r * si.sigma_t);
+          v += -t_over_r_t * (in.sigma_t * si.sigma_t) -
+               st.lambda_t * (si.u_t - t_over_r_t * si.sigma_t);
         cell_residual(i) += v * JxW;
       }
     if (cell_matrix == nullptr)
@@ -273,7 +278,7 @@ namespace NitscheContact
       {
         test_n[i] = shapes[i].u_n - t_over_r * shapes[i].sigma_n;
         if (friction)
-          test_t[i] = shapes[i].u_t - t_over_r * shapes[i].sigma_t;
+          test_t[i] = shapes[i].u_t - t_over_r_t * shapes[i].sigma_t;
       }
 
     for (unsigned int j = 0; j < n; ++j)
@@ -283,7 +288,7 @@ namespace NitscheContact
         Tensor<1, 3> dlam_t;
         if (friction)
           {
-            const Tensor<1, 3> dq = sj.sigma_t - in.r * sj.u_t;
+            const Tensor<1, 3> dq = sj.sigma_t - in.r_t * sj.u_t;
             dlam_t = st.dlambda_t_dq * dq +
                      st.dlambda_t_dtau * (-in.friction * dlam_n);
           }
@@ -292,7 +297,7 @@ namespace NitscheContact
             double v = -t_over_r * sj.sigma_n * shapes[i].sigma_n -
                        dlam_n * test_n[i];
             if (friction)
-              v += -t_over_r * (sj.sigma_t * shapes[i].sigma_t) -
+              v += -t_over_r_t * (sj.sigma_t * shapes[i].sigma_t) -
                    dlam_t * test_t[i];
             (*cell_matrix)(i, j) += v * JxW;
           }

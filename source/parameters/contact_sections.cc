@@ -188,14 +188,18 @@ namespace NitscheContact
                   "auto",
                   Patterns::Anything(),
                   "The dimensionless Nitsche parameter; the penalty is r "
-                  "= gamma0 E / h. theta = 1 needs gamma0 above the trace "
+                  "= gamma0 E / h (the Mindlin plate's 'gsv': gamma0 "
+                  "kappa_s mu t / h^2). theta = 1 needs gamma0 above the trace "
                   "constant of the element and contact points "
                   "(doc/theory.md). 'auto' is 60 in the 3D model (above "
                   "the trace constants 12.1 (Q1) and 33.65 (Q2) of its "
                   "Gauss-Lobatto contact points on the paper's flat "
-                  "cells) and 200 in the plate models (their theta-terms "
-                  "then change the bending stiffness by 0.45 %); a "
-                  "number > 0 is used as given.");
+                  "cells), 100 in the Mindlin plate with its default "
+                  "'Contact formulation = gsv' (about three times its "
+                  "theta = 1 bound on MITC9 squares) and 200 in the other "
+                  "plate formulations (their theta-terms then change the "
+                  "bending stiffness by 0.45 %); a number > 0 is used as "
+                  "given.");
     declare_entry(prm,
                   "Friction coefficient",
                   "0",

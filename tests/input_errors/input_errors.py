@@ -206,6 +206,9 @@ CASES = [
      "set Model = mindlin\nsubsection Mindlin\n  subsection Linear solver\n    set Type = multigrid\n  end\n"
      "  set Shear treatment = MITC9\nend",
      ["Mindlin/Linear solver/Type", "multigrid", "MITC9", "Type = direct"]),
+    ("full shear with the equilibrium contact stress",
+     "set Model = mindlin\nsubsection Mindlin\n  set Shear treatment = full\nend",
+     ["Mindlin/Shear treatment", "'full'", "Contact formulation = nitsche"]),
     ("MITC9 with 2 contact points per direction",
      "set Model = mindlin\nsubsection Geometry\n  set Subdivisions = 2, 2\nend\n"
      "subsection Mindlin\n  set Shear treatment = MITC9\n"

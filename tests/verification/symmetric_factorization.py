@@ -27,8 +27,18 @@ coercivity bounds:
   shear-free rotation field: negative eigenvalues at 0.957 gamma0* (the
   warning is printed at the first such factorisation), none at 1.045
   gamma0*.
+- Mindlin, 'Contact formulation = gsv', theta = 1, MITC9 with the 3x3
+  Gauss-Lobatto contact points on the paper's test: the theta-term
+  -(1/r) sum_q (kappa_s mu t div gamma_h)^2 w_q with r = gamma0 kappa_s mu t /
+  h^2 stays below the shear energy kappa_s mu t int |gamma_h|^2 when gamma0
+  exceeds C_K = max h^2 sum_q (div gamma_h)^2 w_q / int |gamma_h|^2 over the
+  cell's strain space (doc/mindlin.md), which this script computes (30 for
+  these points, 24 for 2 or 3 Gauss points) from an L2-orthonormal basis of
+  the MITC9 strains of the unit square; the bending energy is O((t/h)^2) of
+  the shear energy, so the bound is sharp for a thin plate: negative
+  eigenvalues at 0.9 C_K on the 8x8 mesh, none at 1.1 C_K.
 Without L D L^T (LU) no count is reported."""
-import os, sys
+import math, os, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from common import parse_args, run, check, compare_cycle, set_entries, finish
 
@@ -139,4 +149,79 @@ above, out = run(args, "m_gamma_above", prm_m(round(1.045 * gamma_star, 4)))
 check(negatives(above) == [0, 0] and WARNING not in out,
       "Mindlin gamma0 %.4f > gamma0*: no negative eigenvalue (%s)"
       % (1.045 * gamma_star, negatives(above)))
+
+
+# --- Mindlin, 'Contact formulation = gsv', theta = 1, MITC9
+def legendre(n, x):
+    """The L2(0, 1)-orthonormal Legendre polynomial of degree n <= 2 at x
+    and its derivative."""
+    return ((1.0, 0.0), (math.sqrt(3) * (2 * x - 1), 2 * math.sqrt(3)),
+            (math.sqrt(5) * (6 * x * x - 6 * x + 1), math.sqrt(5) * (12 * x - 6)))[n]
+
+
+def largest_eigenvalue(A):
+    """Cyclic Jacobi rotations of a small symmetric matrix."""
+    n = len(A)
+    A = [row[:] for row in A]
+    for _ in range(100):
+        off = sum(A[i][j] ** 2 for i in range(n) for j in range(n) if i != j)
+        if off < 1e-24 * sum(A[i][i] ** 2 for i in range(n)):
+            break
+        for p in range(n):
+            for q in range(p + 1, n):
+                th = 0.5 * math.atan2(2 * A[p][q], A[q][q] - A[p][p])
+                c, s = math.cos(th), math.sin(th)
+                for k in range(n):
+                    A[k][p], A[k][q] = c * A[k][p] - s * A[k][q], s * A[k][p] + c * A[k][q]
+                for k in range(n):
+                    A[p][k], A[q][k] = c * A[p][k] - s * A[q][k], s * A[p][k] + c * A[q][k]
+    return max(A[i][i] for i in range(n))
+
+
+def mitc9_bound(points, weights):
+    """C_K = max sum_q (div gamma)^2 w_q / int |gamma|^2 over the MITC9
+    strains of the unit square, gamma_x in P1(x) P2(y) and gamma_y in P2(x)
+    P1(y), in an L2-orthonormal basis (the mass matrix is the identity)."""
+    basis = [(0, i, j) for i in range(2) for j in range(3)] + \
+            [(1, i, j) for i in range(3) for j in range(2)]
+    A = [[0.0] * len(basis) for _ in basis]
+    for x, wx in zip(points, weights):
+        for y, wy in zip(points, weights):
+            div = []
+            for c, i, j in basis:
+                (px, dpx), (py, dpy) = legendre(i, x), legendre(j, y)
+                div.append(dpx * py if c == 0 else px * dpy)
+            for a, da in enumerate(div):
+                for b, db in enumerate(div):
+                    A[a][b] += wx * wy * da * db
+    return largest_eigenvalue(A)
+
+
+g = 0.5 / math.sqrt(3)
+a = math.sqrt(0.6) / 2
+bound = mitc9_bound((0.0, 0.5, 1.0), (1 / 6, 2 / 3, 1 / 6))
+gauss = (mitc9_bound((0.5 - g, 0.5 + g), (0.5, 0.5)),
+         mitc9_bound((0.5 - a, 0.5, 0.5 + a), (5 / 18, 8 / 18, 5 / 18)))
+print("MITC9 gsv bound C_K: %.6f (3x3 Gauss-Lobatto), %.6f, %.6f (2, 3 Gauss)"
+      % ((bound,) + gauss))
+check(abs(bound - 30) < 1e-9 and all(abs(b - 24) < 1e-9 for b in gauss),
+      "MITC9 gsv bound: 30 with the Gauss-Lobatto points, 24 with Gauss points, "
+      "as doc/mindlin.md gives them")
+paper_m9 = open(os.path.join(params, "paper_mindlin_mitc9.prm")).read()
+
+
+def prm_gsv(gamma0):
+    return set_entries(paper_m9, [("Number of cycles", "2"), ("Nitsche gamma0", "%.4f" % gamma0),
+                                  ("Contact formulation", "gsv"),
+                                  ("Maximum iterations", "60\n  set Allow non-convergence = true")],
+                       "paper_mindlin_mitc9.prm")
+
+
+below, out = run(args, "m9_gsv_below", prm_gsv(0.9 * bound))
+check(negatives(below)[-1] is not None and negatives(below)[-1] > 0 and WARNING in out,
+      "Mindlin gsv gamma0 = 0.9 C_K: negative eigenvalues on 8x8 cells (%s) and the warning"
+      % negatives(below))
+above, out = run(args, "m9_gsv_above", prm_gsv(1.1 * bound))
+check(negatives(above) == [0, 0] and WARNING not in out,
+      "Mindlin gsv gamma0 = 1.1 C_K: no negative eigenvalue (%s)" % negatives(above))
 finish()

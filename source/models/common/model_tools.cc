@@ -99,12 +99,14 @@ namespace NitscheContact
                              const double            gamma0,
                              const double            h_n,
                              const std::string      &model,
-                             const double            shear_factor)
+                             const double            shear_factor,
+                             const bool              bending)
   {
     const double nu       = prm.material.poisson_ratio;
     const double lambda_E = prm.material.lambda() / prm.material.youngs_modulus;
-    const double factor   = 3. * (1. - nu * nu) * lambda_E * lambda_E *
-                          (h_n / prm.geometry.thickness);
+    const double factor   = bending ? 3. * (1. - nu * nu) * lambda_E *
+                                      lambda_E * (h_n / prm.geometry.thickness) :
+                                      0.;
     const double c_D = factor / gamma0;
     // the tangential term's relative change of the shear stiffness, times
     // gamma0 (mu / E = 1 / (2 (1 + nu)))
@@ -120,15 +122,15 @@ namespace NitscheContact
       << "  warning: with 'Contact/Nitsche theta' = " << prm.contact.theta
       << " and 'Contact/Nitsche gamma0' = " << gamma0
       << " the theta-terms of the " << model
-      << " act on the whole plate, also away from contact, and change its "
-         "(tr k)^2 bending stiffness by "
-      << -prm.contact.theta * 100. * c_D
-      << " % (c/D = 3(1-nu^2)(lambda/E)^2 (h_n/t)/gamma0 = " << c_D
-      << ", h_n = " << h_n << ")";
+      << " act on the whole plate, also away from contact, and change its ";
+    if (bending)
+      o << "(tr k)^2 bending stiffness by " << -prm.contact.theta * 100. * c_D
+        << " % (c/D = 3(1-nu^2)(lambda/E)^2 (h_n/t)/gamma0 = " << c_D
+        << ", h_n = " << h_n << ")";
+    if (bending && shear_factor > 0.)
+      o << ", and with friction the tangential theta-term changes its ";
     if (shear_factor > 0.)
-      o << ", and with friction the tangential theta-term changes its "
-           "shear stiffness by "
-        << -prm.contact.theta * 100. * c_s
+      o << "shear stiffness by " << -prm.contact.theta * 100. * c_s
         << " % (c_s = mu h_n / (kappa_s gamma0 E t) = " << c_s << ")";
     o << ": the result is that of a different plate";
     if (prm.contact.theta == 1. && c_D >= (1. + nu) / 2.)

@@ -62,6 +62,7 @@ namespace NitscheContact
       in.slip     = u - in.u_n * n;
       in.gap      = x[2] - obstacle.height(dealii::Point<2>(x[0], x[1]));
       in.r        = r;
+      in.r_t      = r;
       in.theta        = prm.contact.theta;
       in.lambda_scale = 1. / (1. + kappa * r);
       in.friction = friction;

@@ -27,9 +27,11 @@ namespace NitscheContact
       bulk_matrix = 0.;
     load          = 0.;
     load_integral = 0.;
+    theta_load    = 0.;
+    const bool gsv = settings.formulation == Formulation::gsv;
     const unsigned int n = fe.n_dofs_per_cell();
     std::vector<types::global_dof_index> dofs(n);
-    Vector<double>                       cell_load(n);
+    Vector<double>                       cell_load(n), cell_theta_load(n);
     ElementScratch                       scratch(*this);
     FEValues<2>                          values(mapping, fe, bulk_quadrature,
                        update_values | update_quadrature_points |
@@ -56,6 +58,21 @@ namespace NitscheContact
                                 values.JxW(q);
           }
         const ElementData &d = element_data(c, scratch);
+        if (gsv)
+          {
+            // the theta-term -(theta/r) f sigma_n(v) of the load part of
+            // sigma_n at every contact point, on the load side
+            const unsigned int nq       = contact_quadrature.size();
+            const double       t_over_r = prm.contact.theta / r;
+            cell_theta_load             = 0.;
+            for (unsigned int q = 0; q < nq; ++q)
+              for (unsigned int i = 0; i < n; ++i)
+                cell_theta_load(i) += t_over_r * point_loads[c * nq + q] *
+                                      d.contact_shapes[q][i].sigma_n *
+                                      d.contact_JxW[q];
+            constraints.distribute_local_to_global(cell_theta_load, dofs,
+                                                   theta_load);
+          }
         if (assembled_matrix)
           constraints.distribute_local_to_global(
             d.constant_matrix, cell_load, dofs, constant_matrix, load);
@@ -164,6 +181,8 @@ namespace NitscheContact
         system_matrix.compress(VectorOperation::add);
       }
     residual.add(load_factor, load);
+    if (theta_load.size() > 0)
+      residual.add(load_factor, theta_load);
 
     status.count(pass.status, counts);
     counts.residual_norm = residual.l2_norm();
@@ -252,6 +271,13 @@ namespace NitscheContact
           theta_matrix(d, q, scratch.theta);
         theta->vmult(scratch.tmp, scratch.u);
         scratch.residual -= scratch.tmp;
+        if (!point_loads.empty())
+          // ('gsv') and the load part of the theta-term in theta_load
+          for (unsigned int i = 0; i < n; ++i)
+            scratch.residual(i) += prm.contact.theta / r * load_factor *
+                                   point_loads[k] *
+                                   d.contact_shapes[q][i].sigma_n *
+                                   d.contact_JxW[q];
         if (matrix)
           matrix->add(-1., *theta);
       });

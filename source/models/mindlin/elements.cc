@@ -41,6 +41,24 @@ namespace NitscheContact
           l *= (s - x[m]) / (x[k] - x[m]);
       return l;
     }
+
+    /// Its derivative at s.
+    double
+    lagrange_derivative(const double *x, const unsigned int n,
+                        const unsigned int k, const double s)
+    {
+      double d = 0.;
+      for (unsigned int m = 0; m < n; ++m)
+        if (m != k)
+          {
+            double term = 1. / (x[k] - x[m]);
+            for (unsigned int j = 0; j < n; ++j)
+              if (j != k && j != m)
+                term *= (s - x[j]) / (x[k] - x[j]);
+            d += term;
+          }
+      return d;
+    }
   } // namespace
 
 
@@ -107,6 +125,33 @@ namespace NitscheContact
 
 
 
+  std::array<std::vector<Tensor<1, 2>>, 2>
+  MindlinModel::ShearTying::weight_gradients(const Point<2> &p) const
+  {
+    std::array<std::vector<Tensor<1, 2>>, 2> dw;
+    for (unsigned int b = 0; b < 2; ++b)
+      if (shear == Shear::mitc4)
+        {
+          dw[b].resize(2);
+          dw[b][0][1 - b] = -1.;
+          dw[b][1][1 - b] = 1.;
+        }
+      else if (shear == Shear::mitc9)
+        for (unsigned int l = 0; l < 3; ++l)
+          for (unsigned int k = 0; k < 2; ++k)
+            {
+              Tensor<1, 2> g;
+              g[b] = lagrange_derivative(gauss_a, 2, k, p[b]) *
+                     lagrange(gauss_b, 3, l, p[1 - b]);
+              g[1 - b] = lagrange(gauss_a, 2, k, p[b]) *
+                         lagrange_derivative(gauss_b, 3, l, p[1 - b]);
+              dw[b].push_back(g);
+            }
+    return dw;
+  }
+
+
+
   std::vector<Point<2>>
   MindlinModel::ShearTying::all_points() const
   {
@@ -159,6 +204,46 @@ namespace NitscheContact
 
 
 
+  double
+  MindlinModel::ShearTying::divergence(
+    const std::array<std::vector<double>, 2>       &w,
+    const std::array<std::vector<Tensor<1, 2>>, 2> &dw,
+    const std::array<std::vector<double>, 2>       &e,
+    const DerivativeForm<1, 2, 2>                  &K,
+    const DerivativeForm<2, 2, 2>                  &jacobian_grad)
+  {
+    // gamma_a = K_ba e~_b with e~_b = sum_t w_bt e_bt and K = J^{-1}
+    // ([b][a] = d xi_b / d x_a); d_c K = -K (d_c J) K, and div gamma =
+    // K_ca d_c gamma_a.
+    double tied[2] = {0., 0.};
+    double tied_grad[2][2] = {{0., 0.}, {0., 0.}}; // [b][c]
+    for (unsigned int b = 0; b < 2; ++b)
+      for (unsigned int t = 0; t < w[b].size(); ++t)
+        {
+          tied[b] += w[b][t] * e[b][t];
+          for (unsigned int c = 0; c < 2; ++c)
+            tied_grad[b][c] += dw[b][t][c] * e[b][t];
+        }
+    double div = 0.;
+    for (unsigned int a = 0; a < 2; ++a)
+      for (unsigned int c = 0; c < 2; ++c)
+        {
+          double d_gamma = 0.; // d_c gamma_a
+          for (unsigned int b = 0; b < 2; ++b)
+            {
+              double dK = 0.; // (d_c K)_ba
+              for (unsigned int i = 0; i < 2; ++i)
+                for (unsigned int j = 0; j < 2; ++j)
+                  dK -= K[b][i] * jacobian_grad[i][j][c] * K[j][a];
+              d_gamma += dK * tied[b] + K[b][a] * tied_grad[b][c];
+            }
+          div += K[c][a] * d_gamma;
+        }
+    return div;
+  }
+
+
+
   Tensor<1, 2>
   MindlinModel::shear_strain(const FiniteElement<2> &fe,
                              const unsigned int      i,
@@ -202,7 +287,10 @@ namespace NitscheContact
              update_inverse_jacobians)
     , contact(model.mapping, model.fe, model.contact_quadrature,
               update_values | update_gradients | update_JxW_values |
-                update_inverse_jacobians)
+                update_inverse_jacobians |
+                (model.settings.formulation == Formulation::gsv ?
+                   update_jacobian_grads :
+                   update_default))
     , tying(model.mapping, model.fe,
             Quadrature<2>(model.tying.shear == Shear::full ?
                             std::vector<Point<2>>{Point<2>(0.5, 0.5)} :
@@ -304,7 +392,9 @@ namespace NitscheContact
 
     // Linearised bottom-face quantities (doc/theory.md 3.3) of every shape
     // function at every contact point: u_n = -w, sigma_n = lambda (div ubar
-    // - eps div phi), u_t = ubar - eps phi, sigma_t = -mu gamma_h.
+    // - eps div phi) ('nitsche') or S div gamma_h ('gsv', whose load part
+    // point_input() adds), u_t = ubar - eps phi, sigma_t = -mu gamma_h.
+    const bool gsv = settings.formulation == Formulation::gsv;
     const unsigned int nq = contact_quadrature.size();
     d.contact_JxW.resize(nq);
     resize(d.contact_shapes, nq, n);
@@ -335,6 +425,13 @@ namespace NitscheContact
                 s.sigma_n            = lambda * g[k];
                 s.u_t[k]             = val;
               }
+            if (gsv)
+              s.sigma_n = S * ShearTying::divergence(
+                                contact_weights[q],
+                                contact_weight_gradients[q],
+                                scratch.covariant[i],
+                                scratch.contact.inverse_jacobian(q),
+                                scratch.contact.jacobian_grad(q));
             const Tensor<1, 2> gam = shear(scratch.contact, contact_weights, i, q);
             s.sigma_t[0]           = -mu * gam[0];
             s.sigma_t[1]           = -mu * gam[1];
@@ -355,19 +452,18 @@ namespace NitscheContact
                              FullMatrix<double> &m) const
   {
     // The linear theta-terms that the kernel adds at every point:
-    // -(theta/r) (sigma_n(u) sigma_n(v) [+ sigma_t(u).sigma_t(v)]).
-    const unsigned int n        = fe.n_dofs_per_cell();
-    const double       t_over_r = prm.contact.theta / r;
+    // -theta (sigma_n(u) sigma_n(v) / r [+ sigma_t(u).sigma_t(v) / r_t]).
+    const unsigned int n = fe.n_dofs_per_cell();
     m.reinit(n, n);
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int j = 0; j < n; ++j)
         {
           const ShapeContactData &si = d.contact_shapes[q][i],
                                  &sj = d.contact_shapes[q][j];
-          double v = si.sigma_n * sj.sigma_n;
+          double v = si.sigma_n * sj.sigma_n / r;
           if (friction > 0.)
-            v += si.sigma_t * sj.sigma_t;
-          m(i, j) = -t_over_r * v * d.contact_JxW[q];
+            v += si.sigma_t * sj.sigma_t / r_t;
+          m(i, j) = -prm.contact.theta * v * d.contact_JxW[q];
         }
   }
 
@@ -400,19 +496,21 @@ namespace NitscheContact
         fill_element_data(cell_grid[0], scratch);
         uniform_data = std::move(scratch.data);
       }
-    compute_gaps();
+    compute_point_data();
   }
 
 
 
   void
-  MindlinModel::compute_gaps()
+  MindlinModel::compute_point_data()
   {
     // Gap g = distance from the constrained surface to the obstacle:
     // 'bottom face': the face x3 = -eps must stay above z_obs, so u_n =
     // -w <= g = -eps - z_obs; 'mid-plane': w >= z_obs, g = -z_obs.
     const unsigned int nq = contact_quadrature.size();
+    const bool gsv = settings.formulation == Formulation::gsv;
     gaps.resize(cell_grid.size() * nq);
+    point_loads.resize(gsv ? gaps.size() : 0);
     const double  shift       = prm.obstacle.level_is_midplane ? 0. : eps;
     unsigned long bad_heights = 0;
     Point<2>      bad_point;
@@ -429,6 +527,15 @@ namespace NitscheContact
             if (!std::isfinite(gaps[static_cast<std::size_t>(c) * nq + q]) &&
                 bad_heights++ == 0)
               bad_point = x;
+            if (gsv)
+              {
+                const double f =
+                  transverse_load->value(x, cell_grid[c]->material_id());
+                if (!std::isfinite(f))
+                  non_finite_at_point("Load/Transverse load",
+                                      prm.load.expression, f, x);
+                point_loads[static_cast<std::size_t>(c) * nq + q] = f;
+              }
           }
       }
     if (bad_heights > 0)
@@ -441,7 +548,7 @@ namespace NitscheContact
   MindlinModel::point_input(const ElementData    &d,
                             const Vector<double> &u,
                             const unsigned int    q,
-                            const double          gap) const
+                            const std::size_t     k) const
   {
     PointInput in;
     for (unsigned int i = 0; i < u.size(); ++i)
@@ -452,9 +559,12 @@ namespace NitscheContact
         in.slip += u(i) * s.u_t;
         in.sigma_t += u(i) * s.sigma_t;
       }
-    in.gap       = gap;
+    if (!point_loads.empty())
+      in.sigma_n += load_factor * point_loads[k];
+    in.gap       = gaps[k];
     in.normal[2] = -1.;
     in.r         = r;
+    in.r_t       = r_t;
     in.theta        = prm.contact.theta;
     in.friction  = friction;
     in.lambda_scale = lambda_scale;

@@ -354,6 +354,7 @@ namespace NitscheContact
     const unsigned int nq = contact_quadrature.size();
     PointInput         in;
     in.r         = r;
+    in.r_t       = r_t;
     in.theta        = prm.contact.theta;
     in.normal[2] = -1.;
     in.lambda_scale = lambda_scale;

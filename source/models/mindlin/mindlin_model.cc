@@ -50,9 +50,11 @@ namespace NitscheContact
                              const Settings         &given,
                              MPI_Comm                comm)
     : prm(common)
-    // 'auto': with theta = +-1 the theta-terms then change the bending
-    // stiffness by 0.45 % (doc/mindlin.md)
-    , gamma0(common.contact.gamma0_or(200.))
+    // 'auto': 'nitsche': with theta = +-1 the theta-terms then change the
+    // bending stiffness by 0.45 %; 'gsv': about three times the theta = 1
+    // bound 30 of MITC9 on square cells (doc/mindlin.md)
+    , gamma0(common.contact.gamma0_or(
+        given.formulation == Formulation::gsv ? 100. : 200.))
     , comm(comm)
     , settings(given)
     , eps(0.5 * common.geometry.thickness)
@@ -79,7 +81,9 @@ namespace NitscheContact
         "MITC4 plates need gamma0 > 0.909 for nu = 0.3, other edges up to "
         "1.4, more otherwise, e.g. with the vertex points about 2, MITC9 "
         "with the 3x3 Gauss-Lobatto points 1.6 on the clamped paper test "
-        "and up to about 2.3; doc/mindlin.md) "
+        "and up to about 2.3; with 'Contact formulation = gsv' gamma0 > "
+        "30 for MITC9 on square cells with the 3x3 Gauss-Lobatto points, "
+        "24 with Gauss points, more on distorted cells; doc/mindlin.md) "
         "or use theta = -1"})
     , obstacle(common.obstacle)
   {
@@ -87,7 +91,10 @@ namespace NitscheContact
     for (const Point<2> &p : bulk_quadrature.get_points())
       bulk_weights.push_back(tying.weights(p));
     for (const Point<2> &p : contact_quadrature.get_points())
-      contact_weights.push_back(tying.weights(p));
+      {
+        contact_weights.push_back(tying.weights(p));
+        contact_weight_gradients.push_back(tying.weight_gradients(p));
+      }
     if (Utilities::MPI::n_mpi_processes(comm) > 1)
       throw InputError(
         "invalid value 'mindlin' for parameter 'Model' on " +
@@ -148,9 +155,13 @@ namespace NitscheContact
     d.emplace_back("boundary conditions", prm.geometry.plate.conditions.text());
     d.emplace_back("theta", number_to_string(prm.contact.theta));
     d.emplace_back("gamma0", number_to_string(gamma0));
-    d.emplace_back("Nitsche length h_n",
-                   settings.nitsche_length_is_thickness ? "thickness" :
-                                                          "cell size");
+    d.emplace_back("contact formulation",
+                   settings.formulation == Formulation::gsv ? "gsv" :
+                                                              "nitsche");
+    if (settings.formulation == Formulation::nitsche)
+      d.emplace_back("Nitsche length h_n",
+                     settings.nitsche_length_is_thickness ? "thickness" :
+                                                            "cell size");
     d.emplace_back("friction coefficient",
                    number_to_string(prm.contact.friction));
     d.emplace_back("obstacle convention",
@@ -226,13 +237,20 @@ namespace NitscheContact
       }
 
     load.reinit(dof_handler.n_dofs());
+    theta_load.reinit(settings.formulation == Formulation::gsv ?
+                        dof_handler.n_dofs() :
+                        0);
     residual.reinit(dof_handler.n_dofs());
     base.reinit(dof_handler.n_dofs());
     increment.reinit(dof_handler.n_dofs());
 
     const double h_n =
       settings.nitsche_length_is_thickness ? prm.geometry.thickness : cell_size;
-    r     = gamma0 * prm.material.youngs_modulus / h_n;
+    r_t = gamma0 * prm.material.youngs_modulus / h_n;
+    r   = settings.formulation == Formulation::gsv ?
+            gamma0 * settings.shear_factor * mu * prm.geometry.thickness /
+              (cell_size * cell_size) :
+            r_t;
     kappa = prm.contact.obstacle_compliance_for(
       std::pow(prm.contact.regularisation_length, 4) / prm.bending_stiffness());
     lambda_scale = 1. / (1. + kappa * r);
@@ -244,7 +262,9 @@ namespace NitscheContact
                                    "Mindlin plate",
                                    prm.contact.friction > 0. ?
                                      settings.shear_factor :
-                                     0.);
+                                     0.,
+                                   settings.formulation ==
+                                     Formulation::nitsche);
       if (!w.empty() && w != bias_warning && !settings.quiet)
         std::cout << w << std::endl;
       bias_warning = w;

@@ -27,6 +27,20 @@ namespace NitscheContact
         "best the 3x3 Gauss-Lobatto points (the Q2 nodes), and with "
         "theta = 1 a larger gamma0 than MITC4 (doc/mindlin.md).");
       declare_entry(prm,
+        "Contact formulation", "gsv", Patterns::Selection("nitsche|gsv"),
+        "The normal stress sigma_n on the lower face in the Nitsche contact "
+        "terms. 'gsv' is the plate's transverse equilibrium sigma_n = f + "
+        "div Q_h with the discrete shear force Q_h = kappa_s mu t gamma_h "
+        "(as the Kirchhoff model's 'gsv'), consistent for every theta, with "
+        "r = gamma0 kappa_s mu t / h^2, h the longest cell side. 'nitsche' "
+        "is the paper's: the 3D stress lambda (div ubar - "
+        "(t/2) div phi) of the plate kinematics, with r = gamma0 E / h_n "
+        "('Nitsche length'); with theta != 0 its theta-term changes the "
+        "bending stiffness by 3 (1-nu^2) (lambda/E)^2 / gamma0 (doc/"
+        "mindlin.md). Friction keeps the paper's tangential stress and its r "
+        "= gamma0 E / h_n in both. "
+        "'gsv' needs an MITC element.");
+      declare_entry(prm,
         "Membrane unknowns", "auto", Patterns::Selection("auto|true|false"),
         "Whether the membrane displacements (u_x, u_y) are unknowns: "
         "'auto' makes them unknowns only when 'Contact/Friction "
@@ -41,7 +55,9 @@ namespace NitscheContact
       declare_entry(prm,
         "Nitsche length", "thickness",
         Patterns::Selection("thickness|cell size"),
-        "h_n in the Nitsche parameter r = gamma0 E / h_n: the plate "
+        "h_n in the Nitsche parameter r = gamma0 E / h_n of 'Contact "
+        "formulation = nitsche' and of the tangential terms of both: the "
+        "plate "
         "'thickness' or the 'cell size' (the largest cell side; for MITC9 "
         "the side of the Q2 cell). With 'thickness' theta = 1 is coercive "
         "for a gamma0 of order one on every mesh; with 'cell size' it needs "
@@ -138,6 +154,15 @@ namespace NitscheContact
                 shear == "MITC9" ? Shear::mitc9 :
                                    Shear::full;
     }
+    s.formulation = prm.get("Contact formulation") == "gsv" ?
+                      Formulation::gsv :
+                      Formulation::nitsche;
+    if (s.formulation == Formulation::gsv && s.shear == Shear::full)
+      bad_value("Mindlin/Shear treatment", "full",
+                "MITC4 or MITC9 with 'Contact formulation = gsv' (the "
+                "default), whose equilibrium stress div Q_h is that of the "
+                "MITC strains; 'full' needs 'Contact formulation = "
+                "nitsche'");
     s.membrane_setting = prm.get("Membrane unknowns");
     if (s.membrane_setting == "auto")
       s.membrane = common.contact.friction > 0.;

@@ -85,7 +85,8 @@ namespace NitscheContact
           internal(dofs[i]) += cell_force(i);
       }
     constraints.set_zero(internal);
-    // The round-off of the contact terms r (u_n - g), r = gamma0 E / h_n,
+    // The round-off of the contact terms r (u_n - g), r = gamma0 E / h_n
+    // with 'nitsche',
     // sets a floor to |R|: measured 2e-3 of the load on a clamped plate
     // with t = 0.001 and the paper's load scaled by t^3, whose solution is
     // right, and 1.3e-3 with 'Tolerance = 1e-4' and friction. Between 1e-4

@@ -52,12 +52,15 @@ namespace NitscheContact
   /// sigma_t(v), sigma_t = -mu gamma, which changes its shear stiffness
   /// kappa_s mu t by -theta c_s, c_s = mu h_n / (kappa_s gamma0 E t):
   /// pass shear_factor = kappa_s > 0 to include it (in the 1 % test too).
+  /// bending = false leaves the bending term out (the Mindlin plate's
+  /// 'gsv', whose sigma_n is consistent).
   std::string
   theta_bending_bias_warning(const CommonParameters &prm,
                              double                  gamma0,
                              double                  h_n,
                              const std::string      &model,
-                             double                  shear_factor = 0.);
+                             double                  shear_factor = 0.,
+                             bool                    bending = true);
   /// The warning for a Nitsche parameter gamma0 below 0.1 (none above it),
   /// for ModelDescription::warnings of the models that use gamma0.
   std::vector<std::string>

@@ -161,11 +161,24 @@ namespace NitscheContact
       mitc9
     };
 
+    /// The normal stress on the lower face in the contact terms
+    /// (Mindlin/Contact formulation): 'gsv' the plate's transverse
+    /// equilibrium sigma_n = f + div Q_h, Q_h = kappa_s mu t gamma_h, with
+    /// r = gamma0 kappa_s mu t / h^2, 'nitsche' the paper's sigma_n =
+    /// lambda (div ubar - eps div phi) with r = gamma0 E / h_n
+    /// (doc/mindlin.md).
+    enum class Formulation
+    {
+      nitsche,
+      gsv
+    };
+
     /// Settings of the "Mindlin" subsection (parameters.cc).
     struct Settings
     {
       double       shear_factor = 5. / 6.;
       Shear        shear        = Shear::mitc4;
+      Formulation  formulation  = Formulation::gsv;
       bool         membrane     = false;
       bool         soft_support = false;
       bool         nitsche_length_is_thickness = true;
@@ -235,6 +248,9 @@ namespace NitscheContact
       /// The interpolation weights of the tying points of e_b at p, [b][t].
       std::array<std::vector<double>, 2>
       weights(const dealii::Point<2> &p) const;
+      /// Their gradients in unit coordinates, [b][t].
+      std::array<std::vector<dealii::Tensor<1, 2>>, 2>
+      weight_gradients(const dealii::Point<2> &p) const;
       /// All tying points, direction 0 first (for the Jacobians of a cell).
       std::vector<dealii::Point<2>>
       all_points() const;
@@ -254,6 +270,15 @@ namespace NitscheContact
       strain(const std::array<std::vector<double>, 2> &w,
              const std::array<std::vector<double>, 2> &e,
              const dealii::DerivativeForm<1, 2, 2>    &inverse_jacobian);
+      /// div gamma at a point with the weights w, their unit gradients dw,
+      /// the inverse Jacobian and the gradient of the Jacobian there (the
+      /// derivative of J^{-T} enters on curved cells).
+      static double
+      divergence(const std::array<std::vector<double>, 2>           &w,
+                 const std::array<std::vector<dealii::Tensor<1, 2>>, 2> &dw,
+                 const std::array<std::vector<double>, 2>           &e,
+                 const dealii::DerivativeForm<1, 2, 2> &inverse_jacobian,
+                 const dealii::DerivativeForm<2, 2, 2> &jacobian_grad);
     };
 
   private:
@@ -330,16 +355,17 @@ namespace NitscheContact
     /// Per cycle: the shared element data (uniform grids) and the gaps.
     void
     precompute_cell_data();
-    /// The gap at every contact point of the mesh.
+    /// The gap and, with 'gsv', the load at every contact point of the
+    /// mesh.
     void
-    compute_gaps();
+    compute_point_data();
     /// Kernel input at contact point q of a cell with element data d and
-    /// local values u.
+    /// local values u; k is the point's global index.
     PointInput
     point_input(const ElementData            &d,
                 const dealii::Vector<double> &u,
                 unsigned int                  q,
-                double                        gap) const;
+                std::size_t                   k) const;
     /// Visits the contact points of cell c with element data d and local
     /// values u: visit(q, k, input, state) with the point's global index k
     /// and the kernel's input and state there. Assembly, postprocessing,
@@ -357,7 +383,7 @@ namespace NitscheContact
       for (unsigned int q = 0; q < nq; ++q)
         {
           const std::size_t k  = c * nq + q;
-          const PointInput  in = point_input(d, u, q, gaps[k]);
+          const PointInput  in = point_input(d, u, q, k);
           visit(q, k, in, evaluate_contact_point(in, scheme));
         }
     }
@@ -479,7 +505,12 @@ namespace NitscheContact
     double eps;    ///< half thickness
     double lambda; ///< 3D Lame lambda (used in sigma_n)
     double mu;     ///< shear modulus
-    double r;      ///< Nitsche parameter gamma0 E / h_n
+    /// Nitsche parameter: gamma0 E / h_n ('nitsche'), gamma0 kappa_s mu t
+    /// / h^2 ('gsv')
+    double r;
+    /// Nitsche parameter of the tangential terms, the paper's gamma0 E /
+    /// h_n with both formulations (their sigma_t is the paper's)
+    double r_t;
     /// factor 1/(1 + kappa r) on the Nitsche contact stress (1: rigid
     /// obstacle; 'Contact/Obstacle compliance')
     double lambda_scale = 1.;
@@ -498,6 +529,9 @@ namespace NitscheContact
     /// the tying weights at the bulk and the contact points, [q][b][t]
     std::vector<std::array<std::vector<double>, 2>> bulk_weights,
       contact_weights;
+    /// the tying weights' unit gradients at the contact points, [q][b][t]
+    std::vector<std::array<std::vector<dealii::Tensor<1, 2>>, 2>>
+      contact_weight_gradients;
     dealii::DoFHandler<2>    dof_handler;
 
     /// every cell is the same hx x hy rectangle (the Cartesian shapes)
@@ -527,6 +561,9 @@ namespace NitscheContact
     /// the element data of every cell of a uniform grid
     ElementData         uniform_data;
     std::vector<double> gaps; // [cell*nq + q]
+    /// 'gsv': the transverse load f (factor 1) at every contact point,
+    /// the constant part of sigma_n = f + div Q_h, [cell*nq + q]
+    std::vector<double> point_loads;
     /// point location on meshes that are not uniform grids
     std::unique_ptr<dealii::GridTools::Cache<2>> point_cache;
 
@@ -550,6 +587,10 @@ namespace NitscheContact
     std::array<dealii::FullMatrix<double>, 4> child_prolongation;
     unsigned long last_changed = 0; ///< status changes of the last matrix
     dealii::Vector<double>                 load;      // condensed F
+    /// 'gsv': the theta-term of the load's part of sigma_n at every
+    /// contact point, (theta/r) sum_q f sigma_n(v) JxW (factor 1); the
+    /// residual adds it with the load factor
+    dealii::Vector<double>                 theta_load;
     /// the integral of the load over the plate (factor 1)
     double                                 load_integral = 0.;
     dealii::Vector<double>                 residual;  // -R(U), condensed
