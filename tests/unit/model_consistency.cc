@@ -105,7 +105,8 @@ namespace
            // only p/r ~ 1e-10, closer to its kink than any difference step
            "subsection Elasticity\n  set Plate predictor = false\n"
            "  set Contact quadrature rule = gauss\nend\n"
-           "subsection Mindlin\n  set Contact quadrature rule = gauss\nend\n" +
+           "subsection Mindlin\n  set Contact quadrature rule = gauss\n"
+           "  set Contact formulation = nitsche\nend\n" +
            extra;
   }
 
@@ -333,6 +334,7 @@ namespace
       "subsection Obstacle\n  set Level = -1\nend\n"
       "subsection Contact\n  set Nitsche gamma0 = 20\n"
       "  set Friction coefficient = 0.2\nend\n"
+      "subsection Mindlin\n  set Contact formulation = nitsche\nend\n"
       "subsection Output\n  set Format = none\n  set Directory = output-dir\nend\n");
     MindlinModel &model = made.model;
 
@@ -596,6 +598,18 @@ main(int argc, char **argv)
                                 std::to_string(int(theta)),
                               prm_text("mindlin", theta, 0.2, ""),
                               12);
+  // 'gsv' on MITC9, whose div gamma_h does not vanish: sigma_n = f + S div
+  // gamma_h with the non-uniform load, and the tangential r_t
+  const std::string gsv9 = "subsection Mindlin\n  set Contact formulation = gsv\n"
+                           "  set Shear treatment = MITC9\nend\n"
+                           "subsection Contact\n  set Nitsche gamma0 = auto\nend\n";
+  for (const double theta : {1., 0., -1.})
+    check_model<MindlinModel>("mindlin gsv MITC9 theta=" +
+                                std::to_string(int(theta)),
+                              prm_text("mindlin", theta, 0., gsv9));
+  check_model<MindlinModel>("mindlin gsv MITC9 friction 0.2 theta=1",
+                            prm_text("mindlin", 1., 0.2, gsv9),
+                            12);
   check_mindlin_kinematics();
   check_mindlin_membrane_energy();
   // the membrane: T = 0.01 brings it onto the obstacle; Q2 has the

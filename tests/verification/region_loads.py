@@ -5,7 +5,9 @@ z = -0.05 below; the plates 8^2 -> 32^2 cells, the 3D body 8^2 -> 16^2 x 1).
 
 - 'Region loads = 1: -0.02; 2: -0.001' equals the function load that is
   -0.02 on the square and -0.001 outside (the mesh follows the square's
-  edges, so every quadrature point sees the same load): the same reaction
+  edges, so every quadrature point sees the same load; the Mindlin plate's
+  'gsv' takes the load at its contact points on the cell edges as the
+  limit from inside the cell): the same reaction
   and probes to 1e-10, and so does 'Transverse load = -0.001' with
   'Region loads = 1: -0.019' (a region load adds to the function).
 - The total load in the plate models' summary.json is -0.02 * 25 - 0.001

@@ -34,7 +34,9 @@ coercivity bounds:
   exceeds C_K = max h^2 sum_q (div gamma_h)^2 w_q / int |gamma_h|^2 over the
   cell's strain space (doc/mindlin.md), which this script computes (30 for
   these points, 24 for 2 or 3 Gauss points) from an L2-orthonormal basis of
-  the MITC9 strains of the unit square; the bending energy is O((t/h)^2) of
+  the MITC9 strains of the unit square, and which the program's own cell
+  eigenproblem (summary 'gsv_theta_bound') must reproduce; the bending
+  energy is O((t/h)^2) of
   the shear energy, so the bound is sharp for a thin plate: negative
   eigenvalues at 0.9 C_K on the 8x8 mesh, none at 1.1 C_K.
 Without L D L^T (LU) no count is reported."""
@@ -221,6 +223,9 @@ below, out = run(args, "m9_gsv_below", prm_gsv(0.9 * bound))
 check(negatives(below)[-1] is not None and negatives(below)[-1] > 0 and WARNING in out,
       "Mindlin gsv gamma0 = 0.9 C_K: negative eigenvalues on 8x8 cells (%s) and the warning"
       % negatives(below))
+program_bounds = [dict(c["extra"])["gsv_theta_bound"] for c in below["cycles"]]
+check(all(abs(b / bound - 1) < 1e-8 for b in program_bounds),
+      "Mindlin gsv: the program's gsv_theta_bound %s is this script's C_K" % program_bounds)
 above, out = run(args, "m9_gsv_above", prm_gsv(1.1 * bound))
 check(negatives(above) == [0, 0] and WARNING not in out,
       "Mindlin gsv gamma0 = 1.1 C_K: no negative eigenvalue (%s)" % negatives(above))

@@ -4,7 +4,13 @@
 // and the gaps.
 #include <nitsche_contact/models/mindlin/mindlin_model.h>
 
+#include <nitsche_contact/parameters/input_checks.h>
+
+#include <deal.II/lac/lapack_full_matrix.h>
+
 #include <cmath>
+#include <iostream>
+#include <limits>
 
 namespace NitscheContact
 {
@@ -469,6 +475,93 @@ namespace NitscheContact
 
 
 
+  void
+  MindlinModel::compute_gsv_bound()
+  {
+    // With r = gamma0 S / h^2 the theta = 1 term -(1/r) sum_q sigma_n(v)^2
+    // w_q stays below the shear energy S int |gamma_h(v)|^2 of every cell
+    // when gamma0 > C = h^2 max_K gsv_cell_bound (doc/mindlin.md). The
+    // theta-terms of these element data are not used (r is set after).
+    r = r_t         = 1.;
+    double         largest = 0.;
+    ElementScratch scratch(*this);
+    for (std::size_t c = 0; c < cell_grid.size(); ++c)
+      {
+        fill_element_data(cell_grid[c], scratch);
+        largest = std::max(largest, gsv_cell_bound(scratch.data));
+        if (uniform_cells)
+          break;
+      }
+    gsv_bound = cell_size * cell_size * largest;
+    if (gamma0_is_auto)
+      gamma0_in_use = std::max(gamma0, 3. * gsv_bound);
+    if (prm.contact.theta == 1. && gamma0_in_use <= gsv_bound &&
+        !settings.quiet)
+      std::cout << "  warning: 'Contact/Nitsche gamma0' = "
+                << number_to_string(gamma0_in_use)
+                << " is below the theta = 1 bound C = "
+                << number_to_string(gsv_bound)
+                << " of 'Mindlin/Contact formulation = gsv' on this mesh "
+                   "(the largest h^2 sum_q (div gamma_h)^2 w_q / int "
+                   "|gamma_h|^2 of its cells): the Newton matrix need not "
+                   "be positive definite; use gamma0 > C, 'auto' (3 C "
+                   "where that exceeds 100), or theta = 0 or -1"
+                << std::endl;
+  }
+
+
+
+  double
+  MindlinModel::gsv_cell_bound(const ElementData &d) const
+  {
+    // max v.A v / v.B v, A = sum_q sigma_n sigma_n^T w_q, B = S int gamma_h
+    // gamma_h^T, over the range of B (sigma_n vanishes with gamma_h):
+    // B = V diag(b) V^T, then the largest eigenvalue of W^T A W with W = V
+    // diag(b^-1/2) on the eigenvalues b above round-off.
+    const unsigned int       n = fe.n_dofs_per_cell();
+    const double             S = settings.shear_factor * mu * prm.geometry.thickness;
+    LAPACKFullMatrix<double> shear(n, n);
+    FullMatrix<double>       normal(n, n);
+    for (unsigned int q = 0; q < d.bulk_JxW.size(); ++q)
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = 0; j < n; ++j)
+          shear(i, j) +=
+            S * (d.bulk_shear[q][i] * d.bulk_shear[q][j]) * d.bulk_JxW[q];
+    for (unsigned int q = 0; q < d.contact_JxW.size(); ++q)
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = 0; j < n; ++j)
+          normal(i, j) += d.contact_shapes[q][i].sigma_n *
+                          d.contact_shapes[q][j].sigma_n * d.contact_JxW[q];
+    const double       lowest = -std::numeric_limits<double>::max();
+    Vector<double>     b;
+    FullMatrix<double> V;
+    shear.compute_eigenvalues_symmetric(lowest, -lowest, 0., b, V);
+    const double             top = b.linfty_norm();
+    std::vector<unsigned int> kept;
+    for (unsigned int k = 0; k < b.size(); ++k)
+      if (b(k) > 1e-10 * top)
+        kept.push_back(k);
+    if (kept.empty())
+      return 0.;
+    const unsigned int m = kept.size();
+    FullMatrix<double> W(n, m), AW(n, m);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int c = 0; c < m; ++c)
+        W(i, c) = V(i, kept[c]) / std::sqrt(b(kept[c]));
+    normal.mmult(AW, W);
+    LAPACKFullMatrix<double> M(m, m);
+    for (unsigned int a = 0; a < m; ++a)
+      for (unsigned int c = 0; c < m; ++c)
+        for (unsigned int i = 0; i < n; ++i)
+          M(a, c) += W(i, a) * AW(i, c);
+    Vector<double>     e;
+    FullMatrix<double> unused;
+    M.compute_eigenvalues_symmetric(lowest, -lowest, 0., e, unused);
+    return e.size() > 0 ? e.linfty_norm() / S : 0.;
+  }
+
+
+
   const MindlinModel::ElementData &
   MindlinModel::element_data(const std::size_t c,
                              ElementScratch   &scratch,
@@ -529,8 +622,11 @@ namespace NitscheContact
               bad_point = x;
             if (gsv)
               {
-                const double f =
-                  transverse_load->value(x, cell_grid[c]->material_id());
+                // the load's limit from inside the cell: a point on an
+                // edge between two load regions takes its own cell's
+                const Point<2> inside = x + 1e-12 * (cell_grid[c]->center() - x);
+                const double   f =
+                  transverse_load->value(inside, cell_grid[c]->material_id());
                 if (!std::isfinite(f))
                   non_finite_at_point("Load/Transverse load",
                                       prm.load.expression, f, x);

@@ -55,6 +55,7 @@ namespace NitscheContact
     // bound 30 of MITC9 on square cells (doc/mindlin.md)
     , gamma0(common.contact.gamma0_or(
         given.formulation == Formulation::gsv ? 100. : 200.))
+    , gamma0_is_auto(!common.contact.gamma0.has_value())
     , comm(comm)
     , settings(given)
     , eps(0.5 * common.geometry.thickness)
@@ -75,16 +76,16 @@ namespace NitscheContact
                              settings.linear_solver,
         settings.reuse_factorization,
         settings.symmetric_factorization,
-        "raise 'Contact/Nitsche gamma0' (theta = 1 takes a fraction "
-        "3 (1-nu^2) (lambda/E)^2 / gamma0 of the bending stiffness away; "
-        "with 4x4 Gauss contact points and no membrane unknowns clamped "
-        "MITC4 plates need gamma0 > 0.909 for nu = 0.3, other edges up to "
-        "1.4, more otherwise, e.g. with the vertex points about 2, MITC9 "
-        "with the 3x3 Gauss-Lobatto points 1.6 on the clamped paper test "
-        "and up to about 2.3; with 'Contact formulation = gsv' gamma0 > "
-        "30 for MITC9 on square cells with the 3x3 Gauss-Lobatto points, "
-        "24 with Gauss points, more on distorted cells; doc/mindlin.md) "
-        "or use theta = -1"})
+        "raise 'Contact/Nitsche gamma0' (with 'Contact formulation = "
+        "gsv' above the bound gsv_theta_bound of summary.json, which "
+        "'auto' exceeds threefold; with 'nitsche' theta = 1 takes a "
+        "fraction 3 (1-nu^2) (lambda/E)^2 / gamma0 of the bending "
+        "stiffness away: with 4x4 Gauss contact points and no membrane "
+        "unknowns clamped MITC4 plates need gamma0 > 0.909 for nu = 0.3, "
+        "other edges up to 1.4, more otherwise, e.g. with the vertex "
+        "points about 2, MITC9 with the 3x3 Gauss-Lobatto points 1.6 on "
+        "the clamped paper test and up to about 2.3; doc/mindlin.md) or "
+        "use theta = -1"})
     , obstacle(common.obstacle)
   {
     friction = common.contact.friction;
@@ -154,7 +155,12 @@ namespace NitscheContact
     d.emplace_back("nu", number_to_string(prm.material.poisson_ratio));
     d.emplace_back("boundary conditions", prm.geometry.plate.conditions.text());
     d.emplace_back("theta", number_to_string(prm.contact.theta));
-    d.emplace_back("gamma0", number_to_string(gamma0));
+    d.emplace_back("gamma0",
+                   gamma0_is_auto &&
+                       settings.formulation == Formulation::gsv ?
+                     "auto (100, or 3 times the theta = 1 bound of the "
+                     "mesh where that is larger)" :
+                     number_to_string(gamma0));
     d.emplace_back("contact formulation",
                    settings.formulation == Formulation::gsv ? "gsv" :
                                                               "nitsche");
@@ -246,10 +252,13 @@ namespace NitscheContact
 
     const double h_n =
       settings.nitsche_length_is_thickness ? prm.geometry.thickness : cell_size;
-    r_t = gamma0 * prm.material.youngs_modulus / h_n;
+    gamma0_in_use = gamma0;
+    if (settings.formulation == Formulation::gsv)
+      compute_gsv_bound();
+    r_t = gamma0_in_use * prm.material.youngs_modulus / h_n;
     r   = settings.formulation == Formulation::gsv ?
-            gamma0 * settings.shear_factor * mu * prm.geometry.thickness /
-              (cell_size * cell_size) :
+            gamma0_in_use * settings.shear_factor * mu *
+              prm.geometry.thickness / (cell_size * cell_size) :
             r_t;
     kappa = prm.contact.obstacle_compliance_for(
       std::pow(prm.contact.regularisation_length, 4) / prm.bending_stiffness());
@@ -257,7 +266,7 @@ namespace NitscheContact
     {
       const std::string w =
         theta_bending_bias_warning(prm,
-                                   gamma0,
+                                   gamma0_in_use,
                                    h_n,
                                    "Mindlin plate",
                                    prm.contact.friction > 0. ?

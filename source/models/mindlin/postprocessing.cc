@@ -38,6 +38,9 @@ namespace NitscheContact
       }
     res.probes = deflection_at(probes);
     res.extra.emplace_back("nitsche_r", r);
+    res.extra.emplace_back("nitsche_gamma0", gamma0_in_use);
+    if (settings.formulation == Formulation::gsv)
+      res.extra.emplace_back("gsv_theta_bound", gsv_bound);
     res.extra.emplace_back("load_total", load_factor * load_integral);
     res.extra.emplace_back("relative_residual", relative_residual);
     direct_solver.report_inertia(res.extra);

@@ -355,6 +355,13 @@ namespace NitscheContact
     /// Per cycle: the shared element data (uniform grids) and the gaps.
     void
     precompute_cell_data();
+    /// 'gsv': gsv_bound and gamma0_in_use on the current mesh.
+    void
+    compute_gsv_bound();
+    /// 'gsv': max over v of sum_q sigma_n(v)^2 w_q / (S int |gamma_h(v)|^2)
+    /// on a cell with element data d (sigma_n = S div gamma_h).
+    double
+    gsv_cell_bound(const ElementData &d) const;
     /// The gap and, with 'gsv', the load at every contact point of the
     /// mesh.
     void
@@ -496,9 +503,17 @@ namespace NitscheContact
     solution_errors() const;
 
     const CommonParameters &prm;
-    /// 'Contact/Nitsche gamma0' in use; 'auto' is 200: the theta-terms then
-    /// change the bending stiffness by 0.45 %
+    /// 'Contact/Nitsche gamma0' as given; 'auto' is 200 with 'nitsche'
+    /// (the theta-terms then change the bending stiffness by 0.45 %) and
+    /// 100 with 'gsv', raised on each mesh to 3 gsv_bound where that is
+    /// larger (gamma0_in_use)
     const double            gamma0;
+    const bool              gamma0_is_auto;
+    /// the gamma0 of the current mesh
+    double                  gamma0_in_use = 0.;
+    /// 'gsv': the theta = 1 bound C = max over the cells of h^2 sum_q (div
+    /// gamma_h)^2 w_q / int |gamma_h|^2 (gamma0 > C is coercive)
+    double                  gsv_bound = 0.;
     MPI_Comm                comm;
     const Settings          settings;
 
