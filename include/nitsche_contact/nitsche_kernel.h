@@ -7,13 +7,13 @@
 // doc/theory.md, section 2.3). The kernel returns the Nitsche contact stresses
 //
 //   Lambda_n = [ sigma_n - r (u_n - g) ]_-                     (<= 0)
-//   Lambda_t = P_{B(0, -F Lambda_n)}( sigma_t - r s_t )
+//   Lambda_t = P_{B(0, -F Lambda_n)}( sigma_t - r_t s_t )
 //
 // and the pieces of their generalized (Clarke) derivative. The model then
 // adds, for test function i and trial direction j,
 //
 //   R_i += -(theta/r) sigma_n dsn_i - Lambda_n (dun_i - (theta/r) dsn_i)
-//          -(theta/r) sigma_t.dst_i - Lambda_t.(dut_i - (theta/r) dst_i)
+//          -(theta/r_t) sigma_t.dst_i - Lambda_t.(dut_i - (theta/r_t) dst_i)
 //   K_ij  = derivative of R_i in direction j,
 //
 // which add_point_contribution() below does for a whole cell at once.
@@ -100,7 +100,7 @@ namespace NitscheContact
     double       s_n      = 0.; ///< sigma_n - r (u_n - g)
     double       lambda_n = 0.; ///< [s_n]_-
     double       dlambda_n = 0.; ///< d lambda_n / d s_n (0 or lambda_scale)
-    Tensor<1, 3> q;             ///< sigma_t - r s_t
+    Tensor<1, 3> q;             ///< sigma_t - r_t s_t
     double       tau = 0.;      ///< friction threshold -F lambda_n
     Tensor<1, 3> lambda_t;      ///< P_{B(0,tau)}(q)
     Tensor<2, 3> dlambda_t_dq;  ///< d lambda_t / d q

@@ -194,9 +194,10 @@ namespace NitscheContact
                   "(doc/theory.md). 'auto' is 60 in the 3D model (above "
                   "the trace constants 12.1 (Q1) and 33.65 (Q2) of its "
                   "Gauss-Lobatto contact points on the paper's flat "
-                  "cells), 100 in the Mindlin plate with its default "
-                  "'Contact formulation = gsv' (about three times its "
-                  "theta = 1 bound on MITC9 squares) and 200 in the other "
+                  "cells), in the Mindlin plate with its default "
+                  "'Contact formulation = gsv' 100 or three times the "
+                  "theta = 1 bound of the mesh (summary.json "
+                  "gsv_theta_bound) where that is larger, and 200 in the other "
                   "plate formulations (their theta-terms then change the "
                   "bending stiffness by 0.45 %); a number > 0 is used as "
                   "given.");

@@ -21,9 +21,9 @@ face, the stick stiffness r per unit area is ~1e4 times the membrane
 stiffness of a cell, and the generalized Newton iteration from the nested
 iterate gets trapped in an all-slip state (status cycling, then damped steps
 that stall at |dU|_a/|U|_a ~ 2e-3). With gamma0 = 2 it converges (quadratic
-final steps) to the stick-slip solution. None of the checks below depends on
-gamma0; all three runs use the same value so that they solve the same
-discrete normal problem. The 'gsv' runs take gamma0 = auto (100): their
+final steps) to the stick-slip solution. None of the strip checks depends on
+gamma0; the three runs with the paper's form use the same value so that
+they solve the same discrete normal problem. The 'gsv' runs take gamma0 = auto (100): their
 normal parameter gamma0 kappa_s mu t / h^2 is then 1.6e5 on the first
 mesh, where gamma0 = 2 leaves the normal status too weak for the frictional
 iteration (no convergence in 100 iterations), while 5 to 100 converge."""

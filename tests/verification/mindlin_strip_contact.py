@@ -9,7 +9,8 @@ nu = 0.3, q = 0.02, obstacle 1 below the mid-plane, i.e. g0 = 1 - t/2):
 Differences expected between the Mindlin/Nitsche solution and this:
   - discretisation, O(h^2) in w (h = 0.0625 here: about 2e-4 relative);
   - shear deformation, O((t/l)^2) = 1e-5;
-  - the Nitsche penalty: penetration q/r = 5e-11 (r = gamma0 E / t = 4e8)
+  - the Nitsche penalty: penetration q/r = 5e-11 (r = gamma0 E / t = 4e8;
+    'gsv': r = gamma0 kappa_s mu t / h^2 ~ 1e7, q/r ~ 2e-9)
     and the Poisson-stress shift |sigma_n|/r = O(eps^2 |k|/gamma0) < 1e-8;
   so deflections are checked to 1e-3, the reaction to 2e-4 (measured:
   2e-5 to 6e-5) and the flat zone to 1e-8. The contact area (points with Lambda_n < 0) converges slowly: the

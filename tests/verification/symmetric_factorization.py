@@ -33,7 +33,7 @@ coercivity bounds:
   h^2 stays below the shear energy kappa_s mu t int |gamma_h|^2 when gamma0
   exceeds C_K = max h^2 sum_q (div gamma_h)^2 w_q / int |gamma_h|^2 over the
   cell's strain space (doc/mindlin.md), which this script computes (30 for
-  these points, 24 for 2 or 3 Gauss points) from an L2-orthonormal basis of
+  these points, 24 for 2, 3 or 4 Gauss points) from an L2-orthonormal basis of
   the MITC9 strains of the unit square, and which the program's own cell
   eigenproblem (summary 'gsv_theta_bound') must reproduce; the bending
   energy is O((t/h)^2) of
@@ -202,9 +202,13 @@ def mitc9_bound(points, weights):
 g = 0.5 / math.sqrt(3)
 a = math.sqrt(0.6) / 2
 bound = mitc9_bound((0.0, 0.5, 1.0), (1 / 6, 2 / 3, 1 / 6))
+x4 = [math.sqrt(3 / 7 - 2 / 7 * math.sqrt(6 / 5)), math.sqrt(3 / 7 + 2 / 7 * math.sqrt(6 / 5))]
+w4 = [(18 + math.sqrt(30)) / 36, (18 - math.sqrt(30)) / 36]
 gauss = (mitc9_bound((0.5 - g, 0.5 + g), (0.5, 0.5)),
-         mitc9_bound((0.5 - a, 0.5, 0.5 + a), (5 / 18, 8 / 18, 5 / 18)))
-print("MITC9 gsv bound C_K: %.6f (3x3 Gauss-Lobatto), %.6f, %.6f (2, 3 Gauss)"
+         mitc9_bound((0.5 - a, 0.5, 0.5 + a), (5 / 18, 8 / 18, 5 / 18)),
+         mitc9_bound([0.5 - x / 2 for x in x4] + [0.5 + x / 2 for x in x4],
+                     [w / 2 for w in w4] * 2))
+print("MITC9 gsv bound C_K: %.6f (3x3 Gauss-Lobatto), %.6f, %.6f, %.6f (2, 3, 4 Gauss)"
       % ((bound,) + gauss))
 check(abs(bound - 30) < 1e-9 and all(abs(b - 24) < 1e-9 for b in gauss),
       "MITC9 gsv bound: 30 with the Gauss-Lobatto points, 24 with Gauss points, "

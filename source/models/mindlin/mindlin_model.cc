@@ -164,7 +164,8 @@ namespace NitscheContact
     d.emplace_back("contact formulation",
                    settings.formulation == Formulation::gsv ? "gsv" :
                                                               "nitsche");
-    if (settings.formulation == Formulation::nitsche)
+    if (settings.formulation == Formulation::nitsche ||
+        prm.contact.friction > 0.)
       d.emplace_back("Nitsche length h_n",
                      settings.nitsche_length_is_thickness ? "thickness" :
                                                             "cell size");
