@@ -122,6 +122,18 @@ end
 """
 
 
+# The Mindlin plate's equilibrium contact stress with its own gamma0, for
+# tests whose text (or PINNED) sets the paper's form: appended, it wins.
+MINDLIN_GSV = """
+subsection Mindlin
+  set Contact formulation = gsv
+end
+subsection Contact
+  set Nitsche gamma0 = auto
+end
+"""
+
+
 def run(args, name, prm_text, np=1, expect_status=0, output_format="none", pinned=True):
     """Write <workdir>/<name>.prm (with Output/Directory set to <name>),
     run the program, and return (summary dict or None, stdout+stderr).

@@ -69,7 +69,7 @@ parameters/paper_3d.prm does); a cold start on 16x16x1 needed 195 Newton
 iterations and 60 s, the nested run about 100 iterations and 10 s."""
 import os
 import time
-from common import parse_args, run, check, close, finish
+from common import parse_args, run, check, close, finish, MINDLIN_GSV
 
 args = parse_args()
 PRM = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "parameters")
@@ -161,13 +161,7 @@ subsection Geometry
   set Subdivisions = 8, 8
   set Number of cycles = 3
 end
-subsection Mindlin
-  set Contact formulation = gsv
-end
-subsection Contact
-  set Nitsche gamma0 = auto
-end
-"""))
+""" + MINDLIN_GSV))
 for j, what, tol in ((None, "reaction", 4.5e-3), (1, "w(2.5,5)", 4.5e-3),
                      (3, "w(2.5,2.5)", 5.5e-3), (2, "w(1,5)", 2.5e-2)):
     value = (lambda c: c["contact_force"] if j is None else c["probes"][j])

@@ -35,7 +35,7 @@ closer to Kirchhoff than MITC9 with the paper's form in the reaction, at
 8e-5). MITC4 gsv: its own error at 64^2 against the 256^2 plates (6.3e-4,
 6.9e-4, 5.5e-3, 1.0e-3) plus Kirchhoff's: 2e-3 for the reaction and the
 contact zone, 1e-2 at (1,5)."""
-from common import parse_args, run, check, close, finish
+from common import parse_args, run, check, close, finish, MINDLIN_GSV
 
 args = parse_args()
 
@@ -99,16 +99,8 @@ subsection Nonlinear solver
 end
 """
 mitc9, _ = run(args, "mindlin_mitc9", mitc9_text)
-GSV = """
-subsection Mindlin
-  set Contact formulation = gsv
-end
-subsection Contact
-  set Nitsche gamma0 = auto
-end
-"""
-mindlin_gsv, _ = run(args, "mindlin_gsv", mindlin_text + GSV)
-mitc9_gsv, _ = run(args, "mindlin_mitc9_gsv", mitc9_text + GSV)
+mindlin_gsv, _ = run(args, "mindlin_gsv", mindlin_text + MINDLIN_GSV)
+mitc9_gsv, _ = run(args, "mindlin_mitc9_gsv", mitc9_text + MINDLIN_GSV)
 kirchhoff, _ = run(args, "kirchhoff", COMMON + """
 set Model = kirchhoff
 subsection Geometry
