@@ -6,7 +6,8 @@ Independent facts checked:
   sigma_n inside Lambda_n, and their test functions see no contact term, so
   the membrane problem is N(ubar) = 0 with ubar = 0 on the clamped edges:
   ubar must vanish identically and w must equal the run without membrane
-  unknowns ('Membrane unknowns = auto' drops them when F = 0);
+  unknowns ('Membrane unknowns = auto' drops them when F = 0), with both
+  contact formulations ('gsv': sigma_n does not involve ubar at all);
 - F = 0.2: the Coulomb law |Lambda_t| <= F |Lambda_n| at every contact
   quadrature point (max ratio <= 1), friction loads the membrane (ubar != 0),
   the lower face moves in-plane in the contact zone, both stick and slip
@@ -67,19 +68,27 @@ end
 """
 
 Q1 = dict(cells=16, shear="MITC4", formulation="nitsche", gamma0="2")
-plain, _ = run(args, "mindlin_frictionless", TEMPLATE % dict(F=0, membrane="auto", **Q1))
-check(plain["parameters"]["membrane unknowns"] == "false",
-      "auto: no membrane unknowns without friction")
-memb, _ = run(args, "mindlin_frictionless_membrane",
-              TEMPLATE % dict(F=0, membrane="true", **Q1))
-cp, cm = plain["cycles"][-1], memb["cycles"][-1]
-check(cm["extra"]["max_membrane_displacement"] <= 1e-14,
-      "frictionless: membrane displacement %.3g == 0"
-      % cm["extra"]["max_membrane_displacement"])
-for k in range(3):
-    check(abs(cp["probes"][k] - cm["probes"][k]) <= 1e-10,
-          "frictionless: w(probe %d) identical with and without membrane "
-          "(%.12g, %.12g)" % (k, cp["probes"][k], cm["probes"][k]))
+
+
+def frictionless_checks(name, element):
+    """The frictionless limit: no membrane unknowns by default, and with
+    them ubar = 0 and the same w."""
+    plain, _ = run(args, name, TEMPLATE % dict(F=0, membrane="auto", **element))
+    check(plain["parameters"]["membrane unknowns"] == "false",
+          "%s, auto: no membrane unknowns without friction" % name)
+    memb, _ = run(args, name + "_membrane", TEMPLATE % dict(F=0, membrane="true", **element))
+    cp, cm = plain["cycles"][-1], memb["cycles"][-1]
+    check(cm["extra"]["max_membrane_displacement"] <= 1e-14,
+          "%s: membrane displacement %.3g == 0" % (name, cm["extra"]["max_membrane_displacement"]))
+    for k in range(3):
+        check(abs(cp["probes"][k] - cm["probes"][k]) <= 1e-10,
+              "%s: w(probe %d) identical with and without membrane (%.12g, %.12g)"
+              % (name, k, cp["probes"][k], cm["probes"][k]))
+    return cp
+
+
+cp = frictionless_checks("mindlin_frictionless", Q1)
+frictionless_checks("mindlin_frictionless_gsv", dict(Q1, formulation="gsv", gamma0="auto"))
 
 def friction_checks(name, element):
     fric, _ = run(args, name, TEMPLATE % dict(F=0.2, membrane="auto", **element))
