@@ -25,6 +25,7 @@
 #define nitsche_contact_model_h
 
 #include <deal.II/base/point.h>
+#include <deal.II/lac/vector.h>
 
 #include <nitsche_contact/contact_records.h>
 #include <nitsche_contact/nitsche_kernel.h>
@@ -54,6 +55,22 @@ namespace NitscheContact
   {
     std::uint64_t n_dofs    = 0;
     double        cell_size = 0.; ///< largest in-plane cell side
+    std::uint64_t n_cells   = 0; ///< active cells (all MPI ranks)
+  };
+
+  /// An a posteriori estimate of the error of the current iterate in the
+  /// model's energy norm.
+  struct ErrorEstimate
+  {
+    /// eta = (sum_K eta_K^2)^(1/2)
+    double estimate = std::numeric_limits<double>::quiet_NaN();
+    /// the energy norm |U|_a of the iterate (for eta / |U|_a)
+    double solution_norm = std::numeric_limits<double>::quiet_NaN();
+    /// the parts of eta (each the root of its sum over the cells), for
+    /// summary.json: e.g. "residual", "jumps", "contact"
+    std::vector<std::pair<std::string, double>> parts;
+    /// eta_K by active cell index (the cells of this MPI rank)
+    dealii::Vector<float> cell_indicators;
   };
 
   /// Energy norms |dU|_a of the last increment and |U|_a of the iterate.
@@ -208,9 +225,12 @@ namespace NitscheContact
     /// for each series (e.g. "solution", "contact") the master record
     /// (.pvtu) relative to the output directory; the driver keeps one .pvd
     /// file per series.
+    /// `estimate`: this cycle's error estimate, whose cell indicators
+    /// join the output (nullptr: none).
     virtual std::vector<std::pair<std::string, std::string>>
-    write_graphical_output(const std::string &directory,
-                           unsigned int       cycle) const = 0;
+    write_graphical_output(const std::string   &directory,
+                           unsigned int         cycle,
+                           const ErrorEstimate *estimate) const = 0;
   };
 
 
@@ -282,6 +302,25 @@ namespace NitscheContact
     /// The parameter that switches the predictor off, for messages.
     virtual std::string
     predictor_entry() const = 0;
+  };
+
+  /// A model with an a posteriori error estimator, which can also refine
+  /// where it says.
+  class AdaptiveRefinement
+  {
+  public:
+    virtual ~AdaptiveRefinement() = default;
+
+    /// The estimate at the current iterate (after a cycle's solve).
+    virtual ErrorEstimate
+    estimate_error() const = 0;
+
+    /// Instead of setup_cycle() on a cycle after the first: refine the
+    /// cells that Doerfler's criterion ('Geometry/Bulk fraction') marks by
+    /// the indicators of `estimate` (of the current mesh) and carry the
+    /// solution onto the new mesh.
+    virtual void
+    setup_adapted_cycle(const ErrorEstimate &estimate) = 0;
   };
 
   /// The ability `Ability` of `model`, or nullptr if it has none.

@@ -64,6 +64,7 @@ namespace NitscheContact
   ContactDriver::run(ContactModel &model)
   {
     announce(model);
+    check_refinement(model);
     for (unsigned int cycle = 0; cycle < prm.geometry.n_cycles; ++cycle)
       {
         const std::vector<Stage> stages = stages_of_cycle(cycle);
@@ -74,16 +75,58 @@ namespace NitscheContact
         records.back().converged = solve_stages(model, cycle, stages);
         if (!records.back().converged)
           handle_non_convergence(model, cycle);
-        finish_cycle(model, cycle);
+        if (finish_cycle(model, cycle))
+          break;
         // after every cycle: a run stopped later (out of memory, killed)
         // keeps the cycles it finished
-        if (cycle + 1 < prm.geometry.n_cycles)
-          write_summary(model);
+        write_summary(model);
       }
     write_tables();
     write_summary(model);
     if (prm.output.print_timings)
       print_timings();
+    check_target();
+  }
+
+  void
+  ContactDriver::check_refinement(ContactModel &model) const
+  {
+    if (prm.geometry.adaptive && !model_ability<AdaptiveRefinement>(model))
+      throw InputError(
+        "invalid value 'adaptive' for parameter 'Geometry/Refinement' with "
+        "the model '" +
+        model.describe().name +
+        "': it refines globally only; allowed is 'global', or a model with "
+        "an error estimator (membrane)");
+    if (prm.geometry.target_relative_estimate > 0. &&
+        !model_ability<AdaptiveRefinement>(model))
+      throw InputError(
+        "invalid value '" +
+        number_to_string(prm.geometry.target_relative_estimate) +
+        "' for parameter 'Geometry/Target relative error estimate' with the "
+        "model '" +
+        model.describe().name +
+        "': it has no error estimator; allowed is 0, or a model with one "
+        "(membrane)");
+  }
+
+  void
+  ContactDriver::check_target() const
+  {
+    const double target = prm.geometry.target_relative_estimate;
+    if (target == 0. || records.empty())
+      return;
+    const ErrorEstimate &e = records.back().estimate;
+    if (e.estimate <= target * e.solution_norm)
+      return;
+    throw ConvergenceFailure(
+      "the target 'Geometry/Target relative error estimate' = " +
+      number_to_string(target) + " was not met in " +
+      std::to_string(records.size()) + " cycles: the last estimate is " +
+      number_to_string(e.estimate / e.solution_norm) + " at " +
+      std::to_string(records.back().n_dofs) +
+      " DoFs (raise 'Geometry/Number of cycles', or give a larger target); "
+      "summary.json holds every cycle");
   }
 
   void
@@ -168,7 +211,11 @@ namespace NitscheContact
               write_summary(model);
               throw;
             }
-        model.setup_cycle(cycle);
+        if (cycle > 0 && prm.geometry.adaptive)
+          model_ability<AdaptiveRefinement>(model)->setup_adapted_cycle(
+            records.back().estimate);
+        else
+          model.setup_cycle(cycle);
       }
     catch (const InputError &e)
       {
@@ -186,6 +233,7 @@ namespace NitscheContact
     setup.stop();
     const ProblemSize size   = model.problem_size();
     rec.n_dofs               = size.n_dofs;
+    rec.n_cells              = size.n_cells;
     rec.h                    = size.cell_size;
     records.push_back(rec);
   }
@@ -282,7 +330,7 @@ namespace NitscheContact
          std::string()));
   }
 
-  void
+  bool
   ContactDriver::finish_cycle(ContactModel &model, const unsigned int cycle)
   {
     CycleRecord       &rec = records.back();
@@ -299,7 +347,14 @@ namespace NitscheContact
         write_summary(model);
         throw;
       }
+    const auto *estimator = model_ability<AdaptiveRefinement>(model);
+    if (estimator)
+      rec.estimate = estimator->estimate_error();
     postprocess.stop();
+    const double target = prm.geometry.target_relative_estimate;
+    rec.last = cycle + 1 == prm.geometry.n_cycles ||
+               (target > 0. &&
+                rec.estimate.estimate <= target * rec.estimate.solution_norm);
 
     TimerOutput::Scope output(*rec.timer, Phase::output);
     if (prm.output.format != "none")
@@ -309,6 +364,12 @@ namespace NitscheContact
       write_contact_points(model, cycle);
     output.stop();
     print_cycle_results();
+    if (estimator)
+      print_error_estimate();
+    if (rec.last && cycle + 1 < prm.geometry.n_cycles)
+      pcout << "  target 'Geometry/Target relative error estimate' = "
+            << target << " met" << std::endl;
+    return rec.last;
   }
 
   void

@@ -63,14 +63,61 @@ namespace NitscheContact
         }
       return rates;
     }
+
+    /// The rate s of e ~ N^(-s) between two cycles with e0 at n0 DoFs and
+    /// e1 at n1; NaN where it is undefined.
+    double
+    dof_rate(const double e0, const double e1, const double n0, const double n1)
+    {
+      if (!(e0 > 0. && e1 > 0.) || !(n1 > n0))
+        return std::numeric_limits<double>::quiet_NaN();
+      return std::log(e0 / e1) / std::log(n1 / n0);
+    }
+
+    /// The rates in DoFs (e ~ N^-rate) of each error of records[i] and of
+    /// its error estimate ("error_estimate") against the previous cycle.
+    template <class Records>
+    std::vector<std::pair<std::string, double>>
+    dof_rates(const Records &records, const std::size_t i)
+    {
+      std::vector<std::pair<std::string, double>> rates;
+      if (i == 0)
+        return rates;
+      const auto &r = records[i], &previous = records[i - 1];
+      for (const auto &e : r.results.errors)
+        for (const auto &p : previous.results.errors)
+          if (p.first == e.first)
+            rates.emplace_back(
+              e.first,
+              dof_rate(p.second, e.second, previous.n_dofs, r.n_dofs));
+      rates.emplace_back("error_estimate",
+                         dof_rate(previous.estimate.estimate,
+                                  r.estimate.estimate,
+                                  previous.n_dofs,
+                                  r.n_dofs));
+      return rates;
+    }
+
+    /// The error in the energy norm among a cycle's errors (NaN if none).
+    double
+    energy_error(const CycleResults &results)
+    {
+      for (const auto &e : results.errors)
+        if (e.first == "energy")
+          return e.second;
+      return std::numeric_limits<double>::quiet_NaN();
+    }
   } // namespace
 
   void
   ContactDriver::write_graphical_output(const ContactModel &model,
                                         const unsigned int  cycle)
   {
-    for (const auto &series :
-         model.write_graphical_output(prm.output.directory, cycle))
+    const ErrorEstimate &estimate = records.back().estimate;
+    for (const auto &series : model.write_graphical_output(
+           prm.output.directory,
+           cycle,
+           estimate.cell_indicators.size() > 0 ? &estimate : nullptr))
       pvd_entries[series.first].emplace_back(static_cast<double>(cycle),
                                              series.second);
     if (Utilities::MPI::this_mpi_process(comm) != 0)
@@ -108,6 +155,19 @@ namespace NitscheContact
   }
 
   void
+  ContactDriver::print_error_estimate() const
+  {
+    const CycleRecord   &r = records.back();
+    const ErrorEstimate &e = r.estimate;
+    pcout << "  error estimate eta = " << e.estimate << ", eta/|U|_a = "
+          << e.estimate / e.solution_norm << ", " << r.n_cells << " cells";
+    const double error = energy_error(r.results);
+    if (std::isfinite(error))
+      pcout << ", effectivity eta/|e|_a = " << e.estimate / error;
+    pcout << std::endl;
+  }
+
+  void
   ContactDriver::print_timings() const
   {
     pcout << "\nWall-clock seconds per phase\n"
@@ -138,7 +198,7 @@ namespace NitscheContact
     const std::vector<double> w = model.deflection_at(points);
     const std::vector<double> pressure = model.contact_pressure_at(points);
     // the 2D field (collective: before the rank check below)
-    if (cycle + 1 == prm.geometry.n_cycles && prm.output.field_points > 0)
+    if (records.back().last && prm.output.field_points > 0)
       {
         // a grid over the plate's bounding box; its points off the plate
         // are left out
@@ -181,7 +241,7 @@ namespace NitscheContact
             << " points of 'Output/Profile line' lie off the plate and are "
                "left out of profile.csv"
             << std::endl;
-    if (cycle + 1 == prm.geometry.n_cycles)
+    if (records.back().last)
       std::filesystem::copy_file(
         prm.output.directory + "/profile-" +
           Utilities::int_to_string(cycle, 2) + ".csv",
@@ -233,10 +293,16 @@ namespace NitscheContact
   {
     ConvergenceTable table;
     std::vector<std::string> error_names;
+    const bool estimated =
+      std::any_of(records.begin(), records.end(), [](const CycleRecord &r) {
+        return std::isfinite(r.estimate.estimate);
+      });
     for (const auto &r : records)
       {
         table.add_value("cycle", r.cycle);
         table.add_value("dofs", static_cast<unsigned long>(r.n_dofs));
+        if (estimated)
+          table.add_value("cells", static_cast<unsigned long>(r.n_cells));
         table.add_value("h", r.h);
         table.add_value("its", r.iterations);
         table.add_value("area", r.results.contact_area);
@@ -245,6 +311,8 @@ namespace NitscheContact
         table.add_value("max_w", r.results.max_deflection);
         for (unsigned int p = 0; p < r.results.probes.size(); ++p)
           table.add_value("w@p" + std::to_string(p), r.results.probes[p]);
+        if (estimated)
+          table.add_value("eta", r.estimate.estimate);
         for (const auto &e : r.results.errors)
           {
             table.add_value(e.first, e.second);
@@ -264,12 +332,25 @@ namespace NitscheContact
           table.set_precision("w@p" + std::to_string(p), 6);
           table.set_scientific("w@p" + std::to_string(p), true);
         }
+    // rates in h (log2 of the reduction per cycle) on uniform meshes, in
+    // DoFs (e ~ N^-rate) on adapted ones; the estimate's always in DoFs
     for (const auto &e : error_names)
       {
         table.set_precision(e, 3);
         table.set_scientific(e, true);
-        table.evaluate_convergence_rates(e,
-                                         ConvergenceTable::reduction_rate_log2);
+        if (prm.geometry.adaptive)
+          table.evaluate_convergence_rates(
+            e, "dofs", ConvergenceTable::reduction_rate_log2, 1);
+        else
+          table.evaluate_convergence_rates(
+            e, ConvergenceTable::reduction_rate_log2);
+      }
+    if (estimated)
+      {
+        table.set_precision("eta", 3);
+        table.set_scientific("eta", true);
+        table.evaluate_convergence_rates(
+          "eta", "dofs", ConvergenceTable::reduction_rate_log2, 1);
       }
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
@@ -289,6 +370,9 @@ namespace NitscheContact
         csv << ",probe" << p;
     for (const auto &e : error_names)
       csv << ",error_" << e << ",rate_" << e;
+    if (estimated)
+      csv << ",cells,error_estimate,error_estimate_relative,rate_estimate_dofs"
+             ",effectivity";
     csv << '\n' << std::setprecision(10);
     for (unsigned int i = 0; i < records.size(); ++i)
       {
@@ -313,6 +397,20 @@ namespace NitscheContact
             csv << ',' << e << ',';
             if (std::isfinite(rate))
               csv << rate;
+          }
+        if (estimated)
+          {
+            const ErrorEstimate &e = r.estimate;
+            const double rate =
+              i > 0 ? dof_rates(records, i).back().second :
+                      std::numeric_limits<double>::quiet_NaN();
+            csv << ',' << r.n_cells << ',' << e.estimate << ','
+                << e.estimate / e.solution_norm << ',';
+            if (std::isfinite(rate))
+              csv << rate;
+            csv << ',';
+            if (std::isfinite(energy_error(r.results)))
+              csv << e.estimate / energy_error(r.results);
           }
         csv << '\n';
       }
@@ -344,6 +442,7 @@ namespace NitscheContact
         const auto &r = records[i];
         f << "    {\n      \"cycle\": " << r.cycle
           << ",\n      \"n_dofs\": " << r.n_dofs
+          << ",\n      \"n_cells\": " << r.n_cells
           << ",\n      \"h\": " << json_number(r.h)
           << ",\n      \"nonlinear_iterations\": " << r.iterations
           << ",\n      \"linear_iterations\": " << r.linear_iterations;
@@ -393,7 +492,31 @@ namespace NitscheContact
                 << json_number(rate.second);
               first = false;
             }
-        f << "},\n      \"extra\": {";
+        f << "},\n      \"rates_dofs\": {";
+        first = true;
+        for (const auto &rate : dof_rates(records, i))
+          if (std::isfinite(rate.second))
+            {
+              f << (first ? "" : ", ") << json_string(rate.first) << ": "
+                << json_number(rate.second);
+              first = false;
+            }
+        f << "}";
+        if (std::isfinite(r.estimate.estimate))
+          {
+            const ErrorEstimate &e = r.estimate;
+            f << ",\n      \"error_estimate\": " << json_number(e.estimate)
+              << ",\n      \"error_estimate_relative\": "
+              << json_number(e.estimate / e.solution_norm)
+              << ",\n      \"effectivity\": "
+              << json_number(e.estimate / energy_error(r.results))
+              << ",\n      \"error_estimate_parts\": {";
+            for (unsigned int k = 0; k < e.parts.size(); ++k)
+              f << (k ? ", " : "") << json_string(e.parts[k].first) << ": "
+                << json_number(e.parts[k].second);
+            f << "}";
+          }
+        f << ",\n      \"extra\": {";
         for (unsigned int e = 0; e < r.results.extra.size(); ++e)
           f << (e ? ", " : "") << json_string(r.results.extra[e].first)
             << ": " << json_number(r.results.extra[e].second);

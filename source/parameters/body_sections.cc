@@ -48,9 +48,34 @@ namespace NitscheContact
     declare_entry(prm,
                   "Number of cycles",
                   "1",
-                  Patterns::Integer(1, 12),
-                  "Refinement cycles; each refines the mesh once and "
-                  "starts from the previous cycle's solution.");
+                  Patterns::Integer(1, 60),
+                  "Refinement cycles; each refines the mesh and starts from "
+                  "the previous cycle's solution. At most 12 with 'Refinement "
+                  "= global'; with a target, the most cycles the run may "
+                  "take.");
+    declare_entry(prm,
+                  "Refinement",
+                  "global",
+                  Patterns::Selection("global|adaptive"),
+                  "How each cycle after the first refines the mesh: global "
+                  "refines every cell once; adaptive refines the cells that "
+                  "carry 'Bulk fraction' of the squared error estimate "
+                  "(Doerfler marking), with hanging nodes.");
+    declare_entry(prm,
+                  "Bulk fraction",
+                  "0.3",
+                  Patterns::Double(),
+                  "With 'Refinement = adaptive': the fraction in (0, 1] of "
+                  "eta^2 that the refined cells carry; larger values refine "
+                  "more cells per cycle.");
+    declare_entry(prm,
+                  "Target relative error estimate",
+                  "0",
+                  Patterns::Double(),
+                  "Stop at the first cycle whose error estimate relative to "
+                  "the solution's energy norm, eta / |U|_a, is at most this; "
+                  "a run whose cycles run out first exits with status 2. 0: "
+                  "no target, every cycle runs.");
     prm.leave_subsection();
   }
 
@@ -95,6 +120,25 @@ namespace NitscheContact
     plate.parse(prm, length_x, length_y, subdivisions);
     initial_refinement = prm.get_integer("Initial refinement");
     n_cycles           = prm.get_integer("Number of cycles");
+    adaptive           = prm.get("Refinement") == "adaptive";
+    bulk_fraction      = prm.get_double("Bulk fraction");
+    target_relative_estimate =
+      prm.get_double("Target relative error estimate");
+    if (!adaptive && n_cycles > 12)
+      bad_value("Geometry/Number of cycles",
+                std::to_string(n_cycles),
+                "with 'Refinement = global' at most 12 (each cycle has 4 "
+                "times the cells of the one before); more cycles need "
+                "'Refinement = adaptive'");
+    if (!(bulk_fraction > 0. && bulk_fraction <= 1.))
+      bad_value("Geometry/Bulk fraction",
+                prm.get("Bulk fraction"),
+                "allowed is a number in (0, 1]");
+    if (!(target_relative_estimate >= 0. &&
+          std::isfinite(target_relative_estimate)))
+      bad_value("Geometry/Target relative error estimate",
+                prm.get("Target relative error estimate"),
+                "allowed is 0 (no target) or a positive number");
     prm.leave_subsection();
   }
 

@@ -452,6 +452,23 @@ CASES = [
 blocker = os.path.join(args.workdir, "a_regular_file")
 with open(blocker, "w") as f:
     f.write("not a directory\n")
+CASES += [
+    ("bulk fraction 0", "set Model = membrane\nsubsection Geometry\n  set Refinement = adaptive\n"
+     "  set Bulk fraction = 0\nend", ["Geometry/Bulk fraction", "'0'", "(0, 1]"]),
+    ("bulk fraction above 1", "set Model = membrane\nsubsection Geometry\n  set Bulk fraction = 1.5\nend",
+     ["Geometry/Bulk fraction", "'1.5'", "(0, 1]"]),
+    ("negative target estimate", "set Model = membrane\nsubsection Geometry\n"
+     "  set Target relative error estimate = -0.01\nend",
+     ["Geometry/Target relative error estimate", "'-0.01'", "positive number"]),
+    ("13 global cycles", "set Model = membrane\nsubsection Geometry\n  set Number of cycles = 13\nend",
+     ["Geometry/Number of cycles", "'13'", "at most 12", "Refinement = adaptive"]),
+    ("adaptive Kirchhoff plate", "set Model = kirchhoff\nsubsection Geometry\n  set Refinement = adaptive\n"
+     "  set Number of cycles = 2\nend",
+     ["Geometry/Refinement", "'adaptive'", "'kirchhoff'", "allowed is 'global'", "membrane"]),
+    ("target estimate without an estimator", "set Model = kirchhoff\nsubsection Geometry\n"
+     "  set Target relative error estimate = 0.01\nend",
+     ["Geometry/Target relative error estimate", "'0.01'", "'kirchhoff'", "no error estimator"]),
+]
 CASES.append(("unwritable output directory",
               "subsection Output\n  set Directory = %s/out\nend" % blocker,
               ["Output/Directory", blocker + "/out"]))

@@ -107,7 +107,9 @@ namespace
       return std::vector<double>(p.size(), 0.);
     }
     std::vector<std::pair<std::string, std::string>>
-    write_graphical_output(const std::string &, unsigned int) const override
+    write_graphical_output(const std::string &,
+                           unsigned int,
+                           const ErrorEstimate *) const override
     {
       return {};
     }

@@ -44,6 +44,7 @@ namespace NitscheContact
     {
       unsigned int  cycle      = 0;
       std::uint64_t n_dofs     = 0;
+      std::uint64_t n_cells    = 0;
       double        h          = 0.;
       unsigned int  iterations = 0;
       /// Krylov iterations summed over the cycle (0 with direct solvers)
@@ -51,6 +52,11 @@ namespace NitscheContact
       bool          converged  = false;
       ContactCounts counts;
       CycleResults  results;
+      /// the model's error estimate after the solve (NaN without an
+      /// estimator)
+      ErrorEstimate estimate;
+      /// the run's last cycle: its field grid and profile.csv are written
+      bool          last = false;
       /// the wall times of the cycle's phases (Phase::setup, ...; shared by
       /// the copies of the record)
       std::shared_ptr<dealii::TimerOutput> timer = make_phase_timer();
@@ -85,9 +91,21 @@ namespace NitscheContact
     void
     handle_non_convergence(const ContactModel &model, unsigned int cycle);
 
-    /// Postprocess and write the cycle's output.
-    void
+    /// Postprocess, estimate the error and write the cycle's output;
+    /// returns whether this is the run's last cycle (the last of 'Number
+    /// of cycles', or the target estimate met).
+    bool
     finish_cycle(ContactModel &model, unsigned int cycle);
+
+    /// The refinement of the cycles after the first: InputError unless the
+    /// model can refine as 'Geometry/Refinement' asks.
+    void
+    check_refinement(ContactModel &model) const;
+
+    /// After the last cycle of a run with a target estimate: a
+    /// ConvergenceFailure when it was not met.
+    void
+    check_target() const;
 
     /// Solve the model's predictor on its cycles `cycles` (before the
     /// model's setup_cycle()), recording its work in `rec`.
@@ -111,6 +129,9 @@ namespace NitscheContact
     write_graphical_output(const ContactModel &model, unsigned int cycle);
     void
     print_cycle_results() const;
+    /// eta, eta / |U|_a and the effectivity of the last cycle
+    void
+    print_error_estimate() const;
     void
     write_summary(const ContactModel &model) const;
     void

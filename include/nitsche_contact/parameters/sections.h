@@ -35,7 +35,16 @@ namespace NitscheContact
     /// cells of the coarse mesh along x, y, z (z: the 3D model's layers)
     std::vector<unsigned int> subdivisions;
     unsigned int              initial_refinement = 0;
+    /// the number of cycles; with a target, the most cycles
     unsigned int              n_cycles           = 1;
+    /// 'Refinement': every cycle after the first refines all cells, or
+    /// the cells that Doerfler's bulk criterion marks
+    bool                      adaptive           = false;
+    /// 'Bulk fraction': the marked cells carry this fraction of eta^2
+    double                    bulk_fraction      = 0.3;
+    /// 'Target relative error estimate': stop at the first cycle whose
+    /// eta / |U|_a is at most this (0: no target, run every cycle)
+    double                    target_relative_estimate = 0.;
 
     static void
     declare(dealii::ParameterHandler &prm);

@@ -1,7 +1,9 @@
 // Helpers that several models share: the contact quadrature rule, the
 // one-layer check of the plate models, the cell eigenproblem of the trace
-// constants, and the warnings about the Nitsche parameters.
+// constants, the warnings about the Nitsche parameters and Doerfler
+// marking.
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/grid/grid_refinement.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/vector.h>
@@ -177,5 +179,19 @@ namespace NitscheContact
         "below 'Nonlinear solver/Tolerance' relative to |U| on a settled "
         "contact status) passed without a solution. " + causes);
     return relative;
+  }
+
+  void
+  mark_bulk_fraction(dealii::Triangulation<2>    &triangulation,
+                     const dealii::Vector<float> &indicators,
+                     const double                 fraction)
+  {
+    dealii::Vector<float> squares(indicators.size());
+    for (unsigned int c = 0; c < indicators.size(); ++c)
+      squares[c] = indicators[c] * indicators[c];
+    dealii::GridRefinement::refine_and_coarsen_fixed_fraction(triangulation,
+                                                              squares,
+                                                              fraction,
+                                                              0.);
   }
 } // namespace NitscheContact

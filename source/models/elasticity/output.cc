@@ -196,7 +196,8 @@ namespace NitscheContact
 
   std::vector<std::pair<std::string, std::string>>
   ElasticityModel::write_graphical_output(const std::string &directory,
-                                          const unsigned int cycle) const
+                                          const unsigned int cycle,
+                                          const ErrorEstimate * /*estimate*/) const
   {
     std::vector<std::pair<std::string, std::string>> written;
     const std::vector<std::string> names(3, "displacement");

@@ -13,7 +13,8 @@ namespace NitscheContact
 
   std::vector<std::pair<std::string, std::string>>
   KirchhoffModel::write_graphical_output(const std::string &directory,
-                                         const unsigned int cycle) const
+                                         const unsigned int cycle,
+                                         const ErrorEstimate * /*estimate*/) const
   {
     // Cell data: mean contact pressure p_h and the fraction of contact
     // quadrature points in contact (p_h is a quadrature-point quantity

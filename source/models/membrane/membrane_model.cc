@@ -6,7 +6,6 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/numerics/solution_transfer.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <nitsche_contact/model_registry.h>
@@ -109,6 +108,7 @@ namespace NitscheContact
     // symmetry parts are natural (dw/dn = 0 for symmetry, T dw/dn = 0 for
     // free)
     constraints.clear();
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
     for (const auto b : prm.geometry.plate.boundary_ids)
       if (prm.geometry.boundary_condition(b) == EdgeCondition::clamped ||
           prm.geometry.boundary_condition(b) == EdgeCondition::simply_supported)
@@ -228,18 +228,8 @@ namespace NitscheContact
       }
     else
       {
-        // Nested iteration: Q_k on the refined mesh contains Q_k on the
-        // coarse one, so the transfer reproduces the previous solution.
-        SolutionTransfer<2> transfer(dof_handler);
         triangulation.set_all_refine_flags();
-        triangulation.prepare_coarsening_and_refinement();
-        transfer.prepare_for_coarsening_and_refinement(solution);
-        triangulation.execute_coarsening_and_refinement();
-        setup_dofs();
-        Vector<double> previous = solution;
-        solution.reinit(dof_handler.n_dofs());
-        transfer.interpolate(previous, solution);
-        constraints.distribute(solution);
+        refine_and_transfer();
       }
     base = solution;
     state_changed();
@@ -253,7 +243,7 @@ namespace NitscheContact
     double h = 0.;
     for (const auto &cell : triangulation.active_cell_iterators())
       h = std::max(h, longest_side(cell));
-    return {dof_handler.n_dofs(), h};
+    return {dof_handler.n_dofs(), h, triangulation.n_active_cells()};
   }
 } // namespace NitscheContact
 

@@ -209,13 +209,17 @@ namespace NitscheContact
                                 VectorTools::compute_global_error(
                                   triangulation, cell_errors, norm));
       }
+    // |w - w_h|_a = T^(1/2) |grad (w - w_h)|
+    res.errors.emplace_back("energy",
+                            std::sqrt(tension) * res.errors.back().second);
   }
 
 
 
   std::vector<std::pair<std::string, std::string>>
   MembraneModel::write_graphical_output(const std::string &directory,
-                                        const unsigned int cycle) const
+                                        const unsigned int cycle,
+                                        const ErrorEstimate *estimate) const
   {
     // per cell: the mean contact pressure, the fraction of contact points
     // in contact and the mean gap over the points with an obstacle below
@@ -239,6 +243,8 @@ namespace NitscheContact
     data_out.add_data_vector(pressure, "contact_pressure");
     data_out.add_data_vector(fraction, "contact_fraction");
     data_out.add_data_vector(gap, "gap");
+    if (estimate != nullptr)
+      data_out.add_data_vector(estimate->cell_indicators, "error_indicator");
     data_out.build_patches(*mapping, degree);
     const std::string record = data_out.write_vtu_with_pvtu_record(
       directory + "/", "membrane", cycle, comm, 2);

@@ -10,7 +10,8 @@ namespace NitscheContact
 
   std::vector<std::pair<std::string, std::string>>
   MindlinModel::write_graphical_output(const std::string &directory,
-                                       const unsigned int cycle) const
+                                       const unsigned int cycle,
+                                       const ErrorEstimate * /*estimate*/) const
   {
     // Cell data: mean contact pressure -Lambda_n over the contact points of
     // the cell, fraction of points in contact and fraction slipping.

@@ -1,11 +1,14 @@
 // Helpers that several models share: the contact quadrature rule, the
 // one-layer check of the plate models, the cell eigenproblem of the trace
-// constants, and the warnings about the Nitsche parameters.
+// constants, the warnings about the Nitsche parameters and Doerfler
+// marking.
 #ifndef nitsche_contact_models_common_model_tools_h
 #define nitsche_contact_models_common_model_tools_h
 
 #include <deal.II/base/quadrature.h>
+#include <deal.II/grid/tria.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
 
 #include <nitsche_contact/parameters.h>
 
@@ -76,6 +79,14 @@ namespace NitscheContact
                     bool               allow,
                     const std::string &causes,
                     double             limit = 1e-4);
+
+  /// Doerfler marking: flag for refinement the fewest cells of
+  /// `triangulation` (one process) whose squared indicators (by active cell
+  /// index) sum to `fraction` of the total.
+  void
+  mark_bulk_fraction(dealii::Triangulation<2>    &triangulation,
+                     const dealii::Vector<float> &indicators,
+                     double                       fraction);
 } // namespace NitscheContact
 
 #endif

@@ -60,7 +60,7 @@ namespace NitscheContact
     ProblemSize
     problem_size() const override
     {
-      return {n_dofs(), mesh_size()};
+      return {n_dofs(), mesh_size(), triangulation.n_global_active_cells()};
     }
     /// The Mindlin plate of 'Plate predictor' (nullptr without).
     ContactModel *
@@ -114,8 +114,9 @@ namespace NitscheContact
     contact_pressure_at(
       const std::vector<dealii::Point<2>> &points) const override;
     std::vector<std::pair<std::string, std::string>>
-    write_graphical_output(const std::string &directory,
-                           unsigned int       cycle) const override;
+    write_graphical_output(const std::string   &directory,
+                           unsigned int         cycle,
+                           const ErrorEstimate *estimate) const override;
 
     /// Boundary id of the contact face (bottom, x3 = -t/2).
     static constexpr dealii::types::boundary_id contact_id = 4;

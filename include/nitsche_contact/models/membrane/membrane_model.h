@@ -11,7 +11,7 @@
 // (nitsche_kernel.h) returns Lambda_n = [sigma_n + r (w - psi)]_- / (1 +
 // kappa r). It is the second-order analogue of the Kirchhoff GSV model.
 // One MPI process, any quadrilateral mesh that deal.II's FEValues handle,
-// sparse direct solver.
+// also with hanging nodes (adaptive cycles), sparse direct solver.
 //
 // The implementation is split by concern over source/models/membrane/:
 //   membrane_model.cc   construction, mesh and cycles, the short interface,
@@ -21,6 +21,7 @@
 //                       linear solve
 //   postprocessing.cc   contact results, deflections, errors, graphical
 //                       output
+//   error_estimator.cc  the a posteriori estimator, the adaptive cycles
 #ifndef nitsche_contact_models_membrane_h
 #define nitsche_contact_models_membrane_h
 
@@ -47,7 +48,8 @@
 namespace NitscheContact
 {
   class MembraneModel : public ModelBase<dealii::Vector<double>>,
-                        public ResidualScale
+                        public ResidualScale,
+                        public AdaptiveRefinement
   {
   public:
     /// Declare the subsection "Membrane" (parameters.cc).
@@ -76,8 +78,9 @@ namespace NitscheContact
     contact_pressure_at(
       const std::vector<dealii::Point<2>> &points) const override;
     std::vector<std::pair<std::string, std::string>>
-    write_graphical_output(const std::string &directory,
-                           unsigned int       cycle) const override;
+    write_graphical_output(const std::string   &directory,
+                           unsigned int         cycle,
+                           const ErrorEstimate *estimate) const override;
 
     /// theta = 1: the GSV terms are the gradient of a contact energy.
     bool
@@ -101,6 +104,13 @@ namespace NitscheContact
     {
       return std::abs(load_factor) * unit_load.l2_norm();
     }
+
+    // ----- AdaptiveRefinement (error_estimator.cc)
+
+    ErrorEstimate
+    estimate_error() const override;
+    void
+    setup_adapted_cycle(const ErrorEstimate &estimate) override;
 
     const dealii::Vector<double> &
     negative_residual() const override
@@ -145,6 +155,10 @@ namespace NitscheContact
     /// quadrature points, the load vector.
     void
     tabulate_cell_data();
+    /// Refine the cells flagged for refinement, set up the new space and
+    /// carry the solution onto it (error_estimator.cc).
+    void
+    refine_and_transfer();
 
     // ----- assembly (assembly.cc)
 

@@ -85,7 +85,7 @@ namespace NitscheContact
     ProblemSize
     problem_size() const override
     {
-      return {n_dofs(), mesh_size()};
+      return {n_dofs(), mesh_size(), triangulation.n_global_active_cells()};
     }
     std::vector<std::pair<std::string, std::string>>
     description() const;
@@ -128,8 +128,9 @@ namespace NitscheContact
     contact_pressure_at(
       const std::vector<dealii::Point<2>> &points) const override;
     std::vector<std::pair<std::string, std::string>>
-    write_graphical_output(const std::string &directory,
-                           unsigned int       cycle) const override;
+    write_graphical_output(const std::string   &directory,
+                           unsigned int         cycle,
+                           const ErrorEstimate *estimate) const override;
 
     // ----- for tests (ModelBase)
     const dealii::Vector<double> &
