@@ -43,6 +43,20 @@ namespace NitscheContact
       return out + "\"";
     }
 
+    /// A JSON object of (name, number) pairs; `finite_only` leaves out the
+    /// pairs whose number is not finite (else they are null).
+    std::string
+    json_object(const std::vector<std::pair<std::string, double>> &pairs,
+                const bool finite_only = false)
+    {
+      std::string out;
+      for (const auto &[name, value] : pairs)
+        if (!finite_only || std::isfinite(value))
+          out += (out.empty() ? "" : ", ") + json_string(name) + ": " +
+                 json_number(value);
+      return "{" + out + "}";
+    }
+
     /// The rate log2(e_{i-1} / e_i) of each error of records[i] against the
     /// previous cycle (as the convergence table's reduction_rate_log2),
     /// NaN where either error is missing or not positive.
@@ -479,29 +493,10 @@ namespace NitscheContact
               f << (p ? ", " : "") << json_number(r.results.probes[p]);
             f << "]";
           }
-        f << ",\n      \"errors\": {";
-        for (unsigned int e = 0; e < r.results.errors.size(); ++e)
-          f << (e ? ", " : "") << json_string(r.results.errors[e].first)
-            << ": " << json_number(r.results.errors[e].second);
-        f << "},\n      \"rates\": {";
-        bool first = true;
-        for (const auto &rate : error_rates(records, i))
-          if (std::isfinite(rate.second))
-            {
-              f << (first ? "" : ", ") << json_string(rate.first) << ": "
-                << json_number(rate.second);
-              first = false;
-            }
-        f << "},\n      \"rates_dofs\": {";
-        first = true;
-        for (const auto &rate : dof_rates(records, i))
-          if (std::isfinite(rate.second))
-            {
-              f << (first ? "" : ", ") << json_string(rate.first) << ": "
-                << json_number(rate.second);
-              first = false;
-            }
-        f << "}";
+        f << ",\n      \"errors\": " << json_object(r.results.errors)
+          << ",\n      \"rates\": " << json_object(error_rates(records, i), true)
+          << ",\n      \"rates_dofs\": "
+          << json_object(dof_rates(records, i), true);
         if (std::isfinite(r.estimate.estimate))
           {
             const ErrorEstimate &e = r.estimate;
@@ -510,18 +505,12 @@ namespace NitscheContact
               << json_number(e.estimate / e.solution_norm)
               << ",\n      \"effectivity\": "
               << json_number(e.estimate / energy_error(r.results))
-              << ",\n      \"error_estimate_parts\": {";
-            for (unsigned int k = 0; k < e.parts.size(); ++k)
-              f << (k ? ", " : "") << json_string(e.parts[k].first) << ": "
-                << json_number(e.parts[k].second);
-            f << "}";
+              << ",\n      \"error_estimate_parts\": "
+              << json_object(e.parts);
           }
-        f << ",\n      \"extra\": {";
-        for (unsigned int e = 0; e < r.results.extra.size(); ++e)
-          f << (e ? ", " : "") << json_string(r.results.extra[e].first)
-            << ": " << json_number(r.results.extra[e].second);
+        f << ",\n      \"extra\": " << json_object(r.results.extra);
         const PhaseTimes t = phase_times(*r.timer);
-        f << "},\n      \"wall_times\": {\"setup\": "
+        f << ",\n      \"wall_times\": {\"setup\": "
           << json_number(t.setup) << ", \"assembly\": "
           << json_number(t.assembly) << ", \"solve\": " << json_number(t.solve)
           << ", \"postprocess\": " << json_number(t.postprocess)
