@@ -31,7 +31,7 @@ namespace NitscheContact
 
   namespace
   {
-    /// |grad psi| by central differences with step `delta` (the obstacle
+    /// grad psi by central differences with step `delta` (the obstacle
     /// surfaces offer heights only).
     Tensor<1, 2>
     obstacle_gradient(const ObstacleSurface &obstacle,
