@@ -97,7 +97,7 @@ namespace NitscheContact
         "the model '" +
         model.describe().name +
         "': it refines globally only; allowed is 'global', or a model with "
-        "an error estimator (membrane)");
+        "an error estimator (membrane, mindlin)");
     if (prm.geometry.target_relative_estimate > 0. &&
         !model_ability<AdaptiveRefinement>(model))
       throw InputError(
@@ -107,7 +107,7 @@ namespace NitscheContact
         "model '" +
         model.describe().name +
         "': it has no error estimator; allowed is 0, or a model with one "
-        "(membrane)");
+        "(membrane, mindlin)");
   }
 
   void

@@ -464,7 +464,12 @@ CASES += [
      ["Geometry/Number of cycles", "'13'", "at most 12", "Refinement = adaptive"]),
     ("adaptive Kirchhoff plate", "set Model = kirchhoff\nsubsection Geometry\n  set Refinement = adaptive\n"
      "  set Number of cycles = 2\nend",
-     ["Geometry/Refinement", "'adaptive'", "'kirchhoff'", "allowed is 'global'", "membrane"]),
+     ["Geometry/Refinement", "'adaptive'", "'kirchhoff'", "allowed is 'global'", "membrane",
+      "mindlin"]),
+    ("adaptive Mindlin multigrid", "set Model = mindlin\nsubsection Geometry\n  set Subdivisions = 2, 2\n"
+     "  set Refinement = adaptive\nend\nsubsection Mindlin\n  subsection Linear solver\n"
+     "    set Type = multigrid\n  end\nend",
+     ["Mindlin/Linear solver/Type", "'multigrid'", "uniform meshes", "Type = direct"]),
     ("target estimate without an estimator", "set Model = kirchhoff\nsubsection Geometry\n"
      "  set Target relative error estimate = 0.01\nend",
      ["Geometry/Target relative error estimate", "'0.01'", "'kirchhoff'", "no error estimator"]),

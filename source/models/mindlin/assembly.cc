@@ -63,7 +63,7 @@ namespace NitscheContact
             // the theta-term -(theta/r) f sigma_n(v) of the load part of
             // sigma_n at every contact point, on the load side
             const unsigned int nq       = contact_quadrature.size();
-            const double       t_over_r = prm.contact.theta / r;
+            const double       t_over_r = prm.contact.theta / d.r;
             cell_theta_load             = 0.;
             for (unsigned int q = 0; q < nq; ++q)
               for (unsigned int i = 0; i < n; ++i)
@@ -274,7 +274,7 @@ namespace NitscheContact
         if (!point_loads.empty())
           // ('gsv') and the load part of the theta-term in theta_load
           for (unsigned int i = 0; i < n; ++i)
-            scratch.residual(i) += prm.contact.theta / r * load_factor *
+            scratch.residual(i) += prm.contact.theta / d.r * load_factor *
                                    point_loads[k] *
                                    d.contact_shapes[q][i].sigma_n *
                                    d.contact_JxW[q];

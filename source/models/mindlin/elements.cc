@@ -314,6 +314,12 @@ namespace NitscheContact
   {
     ElementData       &d   = scratch.data;
     const unsigned int n   = fe.n_dofs_per_cell();
+    {
+      double h = 0.;
+      for (unsigned int l = 0; l < GeometryInfo<2>::lines_per_cell; ++l)
+        h = std::max(h, cell->line(l)->diameter());
+      set_nitsche_parameters(h, d);
+    }
     const double       nu  = prm.material.poisson_ratio;
     const double       E   = prm.material.youngs_modulus;
     const double       t   = prm.geometry.thickness;
@@ -453,6 +459,21 @@ namespace NitscheContact
 
 
   void
+  MindlinModel::set_nitsche_parameters(const double h, ElementData &d) const
+  {
+    const double h_n =
+      settings.nitsche_length_is_thickness ? prm.geometry.thickness : h;
+    d.r_t = gamma0_in_use * prm.material.youngs_modulus / h_n;
+    d.r   = settings.formulation == Formulation::gsv ?
+              gamma0_in_use * settings.shear_factor * mu *
+                prm.geometry.thickness / (h * h) :
+              d.r_t;
+    d.lambda_scale = 1. / (1. + kappa * d.r);
+  }
+
+
+
+  void
   MindlinModel::theta_matrix(const ElementData  &d,
                              const unsigned int  q,
                              FullMatrix<double> &m) const
@@ -466,9 +487,9 @@ namespace NitscheContact
         {
           const ShapeContactData &si = d.contact_shapes[q][i],
                                  &sj = d.contact_shapes[q][j];
-          double v = si.sigma_n * sj.sigma_n / r;
+          double v = si.sigma_n * sj.sigma_n / d.r;
           if (friction > 0.)
-            v += si.sigma_t * sj.sigma_t / r_t;
+            v += si.sigma_t * sj.sigma_t / d.r_t;
           m(i, j) = -prm.contact.theta * v * d.contact_JxW[q];
         }
   }
@@ -478,21 +499,23 @@ namespace NitscheContact
   void
   MindlinModel::compute_gsv_bound()
   {
-    // With r = gamma0 S / h^2 the theta = 1 term -(1/r) sum_q sigma_n(v)^2
-    // w_q stays below the shear energy S int |gamma_h(v)|^2 of every cell
-    // when gamma0 > C = h^2 max_K gsv_cell_bound (doc/mindlin.md). The
-    // theta-terms of these element data are not used (r is set after).
-    r = r_t         = 1.;
-    double         largest = 0.;
+    // With r_K = gamma0 S / h_K^2 the theta = 1 term -(1/r_K) sum_q
+    // sigma_n(v)^2 w_q stays below the shear energy S int_K |gamma_h(v)|^2
+    // of every cell when gamma0 > C = max_K h_K^2 gsv_cell_bound(K)
+    // (doc/mindlin.md). The theta-terms of these element data are not
+    // used.
+    gsv_bound = 0.;
     ElementScratch scratch(*this);
     for (std::size_t c = 0; c < cell_grid.size(); ++c)
       {
         fill_element_data(cell_grid[c], scratch);
-        largest = std::max(largest, gsv_cell_bound(scratch.data));
+        double h = 0.;
+        for (unsigned int l = 0; l < GeometryInfo<2>::lines_per_cell; ++l)
+          h = std::max(h, cell_grid[c]->line(l)->diameter());
+        gsv_bound = std::max(gsv_bound, h * h * gsv_cell_bound(scratch.data));
         if (uniform_cells)
           break;
       }
-    gsv_bound = cell_size * cell_size * largest;
     if (gamma0_is_auto)
       gamma0_in_use = std::max(gamma0, 3. * gsv_bound);
     if (prm.contact.theta == 1. && gamma0_in_use <= gsv_bound &&
@@ -659,11 +682,11 @@ namespace NitscheContact
       in.sigma_n += load_factor * point_loads[k];
     in.gap       = gaps[k];
     in.normal[2] = -1.;
-    in.r         = r;
-    in.r_t       = r_t;
+    in.r         = d.r;
+    in.r_t       = d.r_t;
     in.theta        = prm.contact.theta;
     in.friction  = friction;
-    in.lambda_scale = lambda_scale;
+    in.lambda_scale = d.lambda_scale;
     return in;
   }
 } // namespace NitscheContact

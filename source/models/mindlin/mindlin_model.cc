@@ -29,6 +29,12 @@ namespace NitscheContact
     // the 3D model's predictor, whose input the 3D model checks): a plate
     // cell refines into 4, the Nitsche parameter is gamma0 E / t, and a
     // compliant obstacle may lie above a supported edge
+    if (settings.multigrid && common.geometry.adaptive)
+      bad_value("Mindlin/Linear solver/Type",
+                "multigrid",
+                "works on uniform meshes only (its levels are the meshes "
+                "coarsened uniformly); with 'Geometry/Refinement = "
+                "adaptive' use 'Type = direct'");
     if (settings.multigrid)
       require_shape(common.geometry.plate,
                     {PlateShape::rectangle},
@@ -203,11 +209,13 @@ namespace NitscheContact
     dof_handler.distribute_dofs(fe);
     direct_solver.clear();
 
-    // On the Cartesian shapes the mesh is a uniform grid: find the cell
-    // size and index the cells by their (i, j) position. The shared
-    // element data rely on every cell being the hx x hy rectangle [v0, v0
-    // + (hx, hy)] with the reference orientation, which is checked here.
-    uniform_cells = is_cartesian(prm.geometry.plate.shape);
+    // On the Cartesian shapes without hanging nodes the mesh is a uniform
+    // grid: find the cell size and index the cells by their (i, j)
+    // position. The shared element data rely on every cell being the hx x
+    // hy rectangle [v0, v0 + (hx, hy)] with the reference orientation,
+    // which is checked here.
+    uniform_cells = is_cartesian(prm.geometry.plate.shape) &&
+                    !triangulation.has_hanging_nodes();
     cell_grid.clear();
     cell_at.clear();
     cell_size = 0.;
@@ -253,17 +261,20 @@ namespace NitscheContact
 
     const double h_n =
       settings.nitsche_length_is_thickness ? prm.geometry.thickness : cell_size;
+    kappa = prm.contact.obstacle_compliance_for(
+      std::pow(prm.contact.regularisation_length, 4) / prm.bending_stiffness());
     gamma0_in_use = gamma0;
     if (settings.formulation == Formulation::gsv)
       compute_gsv_bound();
-    r_t = gamma0_in_use * prm.material.youngs_modulus / h_n;
-    r   = settings.formulation == Formulation::gsv ?
-            gamma0_in_use * settings.shear_factor * mu *
-              prm.geometry.thickness / (cell_size * cell_size) :
-            r_t;
-    kappa = prm.contact.obstacle_compliance_for(
-      std::pow(prm.contact.regularisation_length, 4) / prm.bending_stiffness());
-    lambda_scale = 1. / (1. + kappa * r);
+    // the parameters of the largest cells, for the log and the multigrid
+    // (uniform grids); every cell has its own (set_nitsche_parameters())
+    {
+      ElementData largest;
+      set_nitsche_parameters(cell_size, largest);
+      r            = largest.r;
+      r_t          = largest.r_t;
+      lambda_scale = largest.lambda_scale;
+    }
     {
       const std::string w =
         theta_bending_bias_warning(prm,
@@ -327,6 +338,9 @@ namespace NitscheContact
     // its faces (both components at a corner); a DoF already constrained
     // keeps its constraint, so clamped edges come first.
     constraints.clear();
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    if (settings.shear != Shear::full)
+      add_shear_compatible_hanging_constraints();
     const unsigned int n_comp = fe.n_components();
     std::set<types::boundary_id> tangential_rotation, normal_rotation;
     for (const EdgeCondition condition :
@@ -367,6 +381,57 @@ namespace NitscheContact
 
 
   void
+  MindlinModel::add_shear_compatible_hanging_constraints()
+  {
+    // On a coarse edge A -> B of length H, with the rotations' tangential
+    // components phi_t = phi . (B - A) / H:
+    // MITC4 ties e_t = (w_B - w_A) / H + (phi_t,A + phi_t,B) / 2 on the edge;
+    // its halves tie the same strain when the hanging vertex has w_M =
+    // (w_A + w_B) / 2 + H (phi_t,B - phi_t,A) / 8 (the cubic Hermite value
+    // with the slopes -phi_t). MITC9: the halves' Gauss-point strains are
+    // the coarse edge's P1 projection of w' + phi_t when the midpoint nodes
+    // of the halves add -+ H (phi_t,A + phi_t,B - 2 phi_t,M) / 32 to their
+    // quadratic interpolation (M the coarse edge's midpoint node).
+    const bool mitc9 = settings.shear == Shear::mitc9;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        {
+          const auto face = cell->face(f);
+          if (cell->at_boundary(f) || !face->has_children())
+            continue;
+          const double       H = face->diameter();
+          const Tensor<1, 2> t = (face->vertex(1) - face->vertex(0)) / H;
+          // phi_x, phi_y at vertex v of the face, or (v = 2) of its midpoint
+          const auto rotation = [&](const unsigned int v, const unsigned int k) {
+            return v < 2 ? face->vertex_dof_index(v, phi_component + k) :
+                           face->dof_index(phi_component + k);
+          };
+          // the constrained w and the weights of phi_t at A, B (, M) in it
+          std::vector<std::pair<types::global_dof_index, std::array<double, 3>>>
+            lines;
+          if (!mitc9)
+            lines.push_back({face->child(0)->vertex_dof_index(1, w_component),
+                             {{-H / 8., H / 8., 0.}}});
+          else
+            for (unsigned int k = 0; k < 2; ++k)
+              {
+                const double s = (k == 0 ? -1. : 1.) * H / 32.;
+                lines.push_back({face->child(k)->dof_index(w_component),
+                                 {{s, s, -2. * s}}});
+              }
+          for (const auto &[line, weights] : lines)
+            {
+              Assert(constraints.is_constrained(line), ExcInternalError());
+              for (unsigned int v = 0; v < (mitc9 ? 3u : 2u); ++v)
+                for (unsigned int k = 0; k < 2; ++k)
+                  constraints.add_entry(line, rotation(v, k), weights[v] * t[k]);
+            }
+        }
+  }
+
+
+
+  void
   MindlinModel::set_friction_scale(const double scale)
   {
     // the tangential theta-terms are in the constant part exactly with F > 0:
@@ -395,19 +460,38 @@ namespace NitscheContact
       }
     else
       {
-        // Nested iteration: carry the converged solution to the refined
-        // mesh as the initial iterate.
-        SolutionTransfer<2, Vector<double>> transfer(dof_handler);
         triangulation.set_all_refine_flags();
-        triangulation.prepare_coarsening_and_refinement();
-        transfer.prepare_for_coarsening_and_refinement(solution);
-        triangulation.execute_coarsening_and_refinement();
-        setup_dofs();
-        Vector<double> interpolated(dof_handler.n_dofs());
-        transfer.interpolate(solution, interpolated);
-        solution = interpolated;
-        constraints.distribute(solution);
+        refine_and_transfer();
+        return;
       }
+    start_cycle_on_mesh();
+  }
+
+
+
+  void
+  MindlinModel::refine_and_transfer()
+  {
+    // Nested iteration: Q_k on the refined mesh contains Q_k on the coarse
+    // one, so the converged solution carries over exactly as the initial
+    // iterate.
+    SolutionTransfer<2, Vector<double>> transfer(dof_handler);
+    triangulation.prepare_coarsening_and_refinement();
+    transfer.prepare_for_coarsening_and_refinement(solution);
+    triangulation.execute_coarsening_and_refinement();
+    setup_dofs();
+    Vector<double> interpolated(dof_handler.n_dofs());
+    transfer.interpolate(solution, interpolated);
+    solution = interpolated;
+    constraints.distribute(solution);
+    start_cycle_on_mesh();
+  }
+
+
+
+  void
+  MindlinModel::start_cycle_on_mesh()
+  {
     base = solution;
     increment = 0.;
     precompute_cell_data();

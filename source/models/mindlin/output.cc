@@ -1,5 +1,5 @@
 // Graphical output: the solution and the contact pressure, contact and
-// slip fractions per cell as VTU files.
+// slip fractions and the error indicator per cell as VTU files.
 #include <deal.II/numerics/data_out.h>
 
 #include <nitsche_contact/models/mindlin/mindlin_model.h>
@@ -11,7 +11,7 @@ namespace NitscheContact
   std::vector<std::pair<std::string, std::string>>
   MindlinModel::write_graphical_output(const std::string &directory,
                                        const unsigned int cycle,
-                                       const ErrorEstimate * /*estimate*/) const
+                                       const ErrorEstimate *estimate) const
   {
     // Cell data: mean contact pressure -Lambda_n over the contact points of
     // the cell, fraction of points in contact and fraction slipping.
@@ -40,6 +40,8 @@ namespace NitscheContact
     data_out.add_data_vector(pressure, "contact_pressure");
     data_out.add_data_vector(in_contact, "contact_fraction");
     data_out.add_data_vector(slipping, "slip_fraction");
+    if (estimate != nullptr)
+      data_out.add_data_vector(estimate->cell_indicators, "error_indicator");
     data_out.build_patches(mapping, fe.degree);
     const std::string record = data_out.write_vtu_with_pvtu_record(
       directory + "/", "solution", cycle, comm, 2);

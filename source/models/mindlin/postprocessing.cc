@@ -194,18 +194,29 @@ namespace NitscheContact
     const unsigned int n = fe.n_dofs_per_cell();
     std::vector<types::global_dof_index> dofs(n);
     Vector<double>                       u(n);
-    double err_w_l2 = 0., err_w_h1 = 0., err_phi_l2 = 0., err_phi_h1 = 0.;
+    double err_w_l2 = 0., err_w_h1 = 0., err_phi_l2 = 0., err_phi_h1 = 0.,
+           err_energy = 0.;
     Vector<double>            exact_value(3);
     std::vector<Tensor<1, 2>> exact_grad(3);
-    FEValues<2> fev(mapping, fe, QGauss<2>(4),
+    const QGauss<2>           rule(4);
+    FEValues<2> fev(mapping, fe, rule,
                     update_values | update_gradients |
-                      update_quadrature_points | update_JxW_values);
+                      update_quadrature_points | update_JxW_values |
+                      update_inverse_jacobians);
+    std::vector<std::array<std::vector<double>, 2>> weights;
+    for (const Point<2> &p : rule.get_points())
+      weights.push_back(tying.weights(p));
+    ElementScratch scratch(*this);
+    const double   nu = prm.material.poisson_ratio;
+    const double   D  = prm.bending_stiffness();
+    const double   S  = settings.shear_factor * mu * prm.geometry.thickness;
     for (const auto &cell : cell_grid)
       {
         fev.reinit(cell);
         cell->get_dof_indices(dofs);
         for (unsigned int i = 0; i < n; ++i)
           u(i) = solution(dofs[i]);
+        const auto tied = tied_strains(cell, u, scratch);
         for (unsigned int q = 0; q < fev.n_quadrature_points; ++q)
           {
             exact_solution->vector_value(fev.quadrature_point(q),
@@ -227,6 +238,26 @@ namespace NitscheContact
                   }
               }
             const double JxW = fev.JxW(q);
+            // the energy norm of the error: bending, and the shear of the
+            // exact solution against the element's (tied) gamma_h
+            Tensor<1, 2> shear{{exact_grad[0][0] + exact_value(1),
+                                exact_grad[0][1] + exact_value(2)}};
+            if (settings.shear == Shear::full)
+              shear = eg[0] + Tensor<1, 2>{{e[1], e[2]}};
+            else
+              {
+                Tensor<1, 2> gamma_h;
+                gamma_h = ShearTying::strain(weights[q], tied,
+                                             fev.inverse_jacobian(q));
+                shear -= gamma_h;
+              }
+            const SymmetricTensor<2, 2> curvature =
+              symmetrize(outer_product(Tensor<1, 2>{{1., 0.}}, eg[1]) +
+                         outer_product(Tensor<1, 2>{{0., 1.}}, eg[2]));
+            err_energy += (D * ((1. - nu) * (curvature * curvature) +
+                                nu * std::pow(trace(curvature), 2)) +
+                           S * shear.norm_square()) *
+                          JxW;
             err_w_l2 += e[0] * e[0] * JxW;
             err_w_h1 += eg[0].norm_square() * JxW;
             err_phi_l2 += (e[1] * e[1] + e[2] * e[2]) * JxW;
@@ -238,6 +269,7 @@ namespace NitscheContact
     errors.emplace_back("H1(w)", std::sqrt(err_w_h1));
     errors.emplace_back("L2(phi)", std::sqrt(err_phi_l2));
     errors.emplace_back("H1(phi)", std::sqrt(err_phi_h1));
+    errors.emplace_back("energy", std::sqrt(err_energy));
     return errors;
   }
 

@@ -14,6 +14,7 @@
 // The implementation, in source/models/mindlin/: mindlin_model.cc (set-up,
 // mesh, cycles), parameters.cc, elements.cc (the MITC shear and the cell
 // data), assembly.cc, linear_solver.cc (direct solver and multigrid),
+// error_estimator.cc (the a posteriori estimator, the adaptive cycles),
 // postprocessing.cc and output.cc.
 #ifndef nitsche_contact_models_mindlin_h
 #define nitsche_contact_models_mindlin_h
@@ -64,10 +65,14 @@ namespace NitscheContact
    * the kernel at every point, but lets an iteration touch the global matrix
    * only on cells in contact.
    *
+   * Adapted meshes (hanging nodes) take the path of the non-uniform
+   * meshes: element data per cell.
+   *
    * The model runs on one MPI process (direct solver on a serial mesh).
    */
   class MindlinModel : public ModelBase<dealii::Vector<double>>,
-                       public FrictionContinuation
+                       public FrictionContinuation,
+                       public AdaptiveRefinement
   {
   public:
     static void
@@ -131,6 +136,12 @@ namespace NitscheContact
     write_graphical_output(const std::string   &directory,
                            unsigned int         cycle,
                            const ErrorEstimate *estimate) const override;
+
+    // ----- AdaptiveRefinement (error_estimator.cc)
+    ErrorEstimate
+    estimate_error() const override;
+    void
+    setup_adapted_cycle(const ErrorEstimate &estimate) override;
 
     // ----- for tests (ModelBase)
     const dealii::Vector<double> &
@@ -294,6 +305,14 @@ namespace NitscheContact
     make_grid();
     void
     setup_dofs();
+    /// Refine the flagged cells and carry the solution to the new mesh
+    /// (nested iteration), then start_cycle_on_mesh().
+    void
+    refine_and_transfer();
+    /// The per-cycle data of the current mesh and solution: the cell data,
+    /// the constant part, a fresh contact status.
+    void
+    start_cycle_on_mesh();
     double
     energy_norm(const dealii::Vector<double> &v) const override;
     ContactCounts
@@ -309,6 +328,8 @@ namespace NitscheContact
     /// What the assembly needs of one cell.
     struct ElementData
     {
+      /// the Nitsche parameters of the cell (set_nitsche_parameters())
+      double r = 1., r_t = 1., lambda_scale = 1.;
       /// bending + shear + membrane stiffness
       dealii::FullMatrix<double> bulk_matrix;
       /// bulk_matrix + the theta-terms at every contact point
@@ -348,6 +369,12 @@ namespace NitscheContact
     element_data(std::size_t     c,
                  ElementScratch &scratch,
                  bool            with_bulk = true) const;
+    /// The Nitsche parameters of a cell whose longest side is h, into d:
+    /// r = gamma0 kappa_s mu t / h^2 ('gsv') or gamma0 E / h_n, r_t =
+    /// gamma0 E / h_n (h_n the thickness or h), lambda_scale = 1 / (1 +
+    /// kappa r).
+    void
+    set_nitsche_parameters(double h, ElementData &d) const;
     /// The theta-term matrix of contact point q of d, into m.
     void
     theta_matrix(const ElementData          &d,
@@ -472,6 +499,29 @@ namespace NitscheContact
     void
     update_multigrid() const;
 
+    // The a posteriori estimator (error_estimator.cc).
+    /// The tied covariant shear strains e_bt of the local values u on the
+    /// cell of `scratch.tying` (reinitialised here), [b][t].
+    std::array<std::vector<double>, 2>
+    tied_strains(const dealii::DoFHandler<2>::active_cell_iterator &cell,
+                 const dealii::Vector<double>                     &u,
+                 ElementScratch &scratch) const;
+    struct EstimatorScratch;
+    /// The squared interior indicator of cell c (of `cell_grid`), its
+    /// parts added to `sums`.
+    double
+    cell_residual_terms(std::size_t       c,
+                        EstimatorScratch &scratch,
+                        double           *sums) const;
+    /// The squared edge terms of face f of cell c, added to eta2 (the
+    /// coarser neighbour's half too) and to `sums`.
+    void
+    edge_terms(std::size_t          c,
+               unsigned int         f,
+               EstimatorScratch    &scratch,
+               std::vector<double> &eta2,
+               double              *sums) const;
+
     // Postprocessing (postprocessing.cc).
     /// The means over the contact points of cell c (of `cell_grid`).
     CellContactMeans
@@ -566,9 +616,18 @@ namespace NitscheContact
     /// setup_dofs() on a uniform grid: nx, ny, hx, hy, cell_grid, cell_at.
     void
     index_uniform_grid();
-    /// setup_dofs(): the boundary conditions' constraints.
+    /// setup_dofs(): the hanging nodes' and the boundary conditions'
+    /// constraints.
     void
     make_constraints();
+    /// The hanging nodes' constraints of w made compatible with the MITC
+    /// shear: on each coarse edge with a hanging node the tied tangential
+    /// shear strain of its two halves equals the coarse edge's (w on the
+    /// halves takes the rotations' part of the edge's Hermite
+    /// interpolation), so that refining does not add Kirchhoff constraints
+    /// (doc/mindlin.md, "Adaptive refinement").
+    void
+    add_shear_compatible_hanging_constraints();
 
     dealii::Quadrature<2> contact_quadrature;
     dealii::Quadrature<2> bulk_quadrature; ///< (p+1)x(p+1) Gauss
