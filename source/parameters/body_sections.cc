@@ -60,7 +60,8 @@ namespace NitscheContact
                   "How each cycle after the first refines the mesh: global "
                   "refines every cell once; adaptive refines the cells that "
                   "carry 'Bulk fraction' of the squared error estimate "
-                  "(Doerfler marking), with hanging nodes.");
+                  "(Doerfler marking), with hanging nodes (the membrane and "
+                  "the Mindlin model).");
     declare_entry(prm,
                   "Bulk fraction",
                   "0.3",

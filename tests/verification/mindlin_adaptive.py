@@ -20,6 +20,10 @@
    limits the uniform rate; the adaptive rate fitted over the last cycles
    is at least the optimal 1 - 0.1 and at least 0.15 above the uniform
    one (printed: the DoFs at which it reaches the finest uniform error).
+4. The same problem, two strategies: parameters/paper_mindlin_adaptive.prm
+   (the paper's test, MITC9, to a 5 % estimate) and the uniform cycles of
+   its first mesh to 32^2 cells: their reactions differ relatively by at
+   most the adaptive run's relative estimate.
 
 The strip (width 0.625, symmetry edges y = 0 and y = 0.625, clamped at x =
 0 and x = L = 10, load -q, bottom face on the plane 1 below it): on the
@@ -30,7 +34,7 @@ and Q are continuous at l, and w(l) = -1 fixes l. The pressure q - S phi'
 is positive on the zone and w > -1 on [0, l), so this is the solution."""
 import math, os, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import parse_args, run, check, finish
+from common import parse_args, run, check, finish, shipped_prm
 
 args = parse_args()
 L, E, NU, G0 = 10.0, 2e5, 0.3, 1.0
@@ -198,4 +202,18 @@ finest = uniform[-1]
 reached = [cy for cy in adapted if energy(cy) <= energy(finest)]
 print("  MITC9 strip: the finest uniform error %.2e (%d DoFs) is reached adaptively with %s DoFs"
       % (energy(finest), finest["n_dofs"], reached[0]["n_dofs"] if reached else "no"))
+# ---- 4. the paper's test: adaptive against uniform
+adaptive_run, _ = run(args, "paper_adaptive", shipped_prm("paper_mindlin_adaptive.prm", []),
+                      pinned="rigid")
+uniform_run, _ = run(args, "paper_uniform", shipped_prm(
+    "paper_mindlin_adaptive.prm", [("Refinement", "global"),
+                                   ("Target relative error estimate", "0"),
+                                   ("Number of cycles", "4")]), pinned="rigid")
+a, u = adaptive_run["cycles"][-1], uniform_run["cycles"][-1]
+difference = abs(a["contact_force"] - u["contact_force"]) / u["contact_force"]
+check(a["error_estimate_relative"] <= 0.05 and difference <= a["error_estimate_relative"],
+      "paper's test: the adaptive reaction %.6f (%d DoFs, eta/|U|_a %.3f) and the uniform %.6f "
+      "(%d DoFs) differ by %.1e <= eta/|U|_a"
+      % (a["contact_force"], a["n_dofs"], a["error_estimate_relative"], u["contact_force"],
+         u["n_dofs"], difference))
 finish()

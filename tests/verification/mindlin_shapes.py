@@ -25,7 +25,12 @@ no contact unless said).
 - The L-shape as the built-in shape (one element data for all cells) and
   as a Gmsh file of the same cells (element data per cell), with every
   boundary condition and a plane obstacle: the same discrete solution to
-  round-off; MITC4 also from an Abaqus file of these cells."""
+  round-off; MITC4 also from an Abaqus file of these cells.
+- Adaptive cycles ('Refinement = adaptive', hanging nodes on curved and
+  straight edges): the clamped disk (MITC4 and MITC9, t = 0.1) against its
+  closed form, the effectivity eta / |e|_a in [0.3, 10] within a factor 3
+  and the error falling; the L-shape built-in and from its Gmsh file, the
+  same discrete solution to round-off on every adapted mesh."""
 import math, os, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from common import parse_args, run, check, close, finish, write_msh
@@ -110,6 +115,20 @@ for bc, shear, t, cycles, rates, tolerance in (
                 0.15 if shear == "MITC9" else 0.1)
     w0 = q * 625 / (64 * D) * centre + q * 25 / (4 * kappa * G * t)
     close(last["probes"][0], w0, tolerance, what + ": centre deflection")
+    if bc == "clamped" and t == 0.1:
+        adapted = mindlin("disk_adaptive_%s" % shear,
+                          geometry="set Shape = disk\n  set Initial refinement = 2\n"
+                                   "  set Refinement = adaptive",
+                          t=t, cycles=7 if shear == "MITC4" else 9, bc="all: " + bc,
+                          shear=shear, load=repr(q), exact=exact,
+                          constants="q=%r, D=%r, k=%r, G=%r, th=%r" % (q, D, kappa, G, t))
+        eff = [c["effectivity"] for c in adapted]
+        errors = [c["errors"]["energy"] for c in adapted]
+        check(min(eff) >= 0.3 and max(eff) <= 10 and max(eff) <= 3 * min(eff)
+              and errors[-1] < 0.5 * errors[0],
+              "disk, clamped, %s, adaptive: effectivity %.2f .. %.2f, |e|_a %.2e -> %.2e "
+              "(%d -> %d cells)" % (shear, min(eff), max(eff), errors[0], errors[-1],
+                                    adapted[0]["n_cells"], adapted[-1]["n_cells"]))
 
 # 2. distorted cells: the square's exact solution on a distorted mesh
 t = 0.001
@@ -148,16 +167,20 @@ mesh = os.path.join(args.workdir, "l_shape.msh")
 write_msh(mesh, 2.0, 1.0, 8, 4, lambda x, y: x > 1 and y > 0.5)
 common = "set Length x = 2\n  set Length y = 1\n  set Subdivisions = 8, 4\n  "
 runs = {}
-for shear in ("MITC4", "MITC9"):
+for shear, refinement in (("MITC4", ""), ("MITC9", ""), ("MITC4", "adaptive"),
+                          ("MITC9", "adaptive")):
     for name, geometry in (("built-in", "set Shape = L-shape"),
                            ("file", "set Shape = mesh file\n  set Mesh file = " + mesh)):
-        runs[shear, name] = mindlin("l_shape_%s_%s" % (shear, name.replace("-", "_")),
-                                    geometry=common + geometry, t=0.01, cycles=3,
-                                    bc=BC, shear=shear, load="-0.02",
-                                    level=-0.02, theta=1,
-                                    probes="0.3, 0.5; 0.5, 0.25; 1.7, 0.2")
-    for a, b in zip(runs[shear, "built-in"], runs[shear, "file"]):
-        what = "L-shape, %s, cycle %d" % (shear, a["cycle"])
+        if refinement:
+            geometry += "\n  set Refinement = adaptive"
+        runs[shear + refinement, name] = mindlin(
+            "l_shape_%s_%s%s" % (shear, name.replace("-", "_"), refinement),
+            geometry=common + geometry, t=0.01, cycles=5 if refinement else 3,
+            bc=BC, shear=shear, load="-0.02", level=-0.02, theta=1,
+            probes="0.3, 0.5; 0.5, 0.25; 1.7, 0.2")
+    for a, b in zip(runs[shear + refinement, "built-in"], runs[shear + refinement, "file"]):
+        what = "L-shape, %s%s, cycle %d" % (shear, ", adaptive" if refinement else "",
+                                            a["cycle"])
         check(a["n_dofs"] == b["n_dofs"], "%s: %d DoFs, from the file %d"
               % (what, a["n_dofs"], b["n_dofs"]))
         scale = max(abs(p) for p in a["probes"])

@@ -32,7 +32,7 @@ namespace NitscheContact
         "terms. 'gsv' is the plate's transverse equilibrium sigma_n = f + "
         "div Q_h with the discrete shear force Q_h = kappa_s mu t gamma_h "
         "(as the Kirchhoff model's 'gsv'), consistent for every theta, with "
-        "r = gamma0 kappa_s mu t / h^2, h the longest cell side. 'nitsche' "
+        "r = gamma0 kappa_s mu t / h^2, h the cell's longest side. 'nitsche' "
         "is the paper's: the 3D stress lambda (div ubar - "
         "(t/2) div phi) of the plate kinematics, with r = gamma0 E / h_n "
         "('Nitsche length'); with theta != 0 its theta-term changes the "
@@ -58,7 +58,7 @@ namespace NitscheContact
         "h_n in the Nitsche parameter r = gamma0 E / h_n of 'Contact "
         "formulation = nitsche' and of the tangential terms of both: the "
         "plate "
-        "'thickness' or the 'cell size' (the largest cell side; for MITC9 "
+        "'thickness' or the 'cell size' (the cell's longest side; for MITC9 "
         "the side of the Q2 cell). With 'thickness' theta = 1 is coercive "
         "for a gamma0 of order one on every mesh; with 'cell size' it needs "
         "a gamma0 that grows with the ratio of cell size to thickness.");
