@@ -22,6 +22,7 @@
 // natural condition w_E = 1 and the jump is the traction itself, in its
 // natural components (free: all; simple support: M_nn, soft: M n; symmetry:
 // M_nt, Q . n, N_nt).
+#include <deal.II/base/parallel.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/numerics/solution_transfer.h>
@@ -221,10 +222,10 @@ namespace NitscheContact
 
 
 
-  double
-  MindlinModel::cell_residual_terms(const std::size_t c,
-                                    EstimatorScratch &scratch,
-                                    double           *sums) const
+  std::array<double, 5>
+  MindlinModel::cell_residual_terms(const std::size_t          c,
+                                    EstimatorScratch          &scratch,
+                                    std::vector<Tensor<1, 2>> &shear) const
   {
     const auto        &cell = cell_grid[c];
     const unsigned int n    = fe.n_dofs_per_cell();
@@ -246,6 +247,7 @@ namespace NitscheContact
     scratch.samples.reinit(cell);
     const SampledShear sampled =
       sample_shear(tying, e, scratch.samples, scratch.gauss_nodes);
+    shear = sampled.samples;
     const ElementData &d = element_data(c, scratch.element, false);
     // moment, transverse, transverse without p_h, membrane,
     // complementarity
@@ -313,30 +315,30 @@ namespace NitscheContact
         if (ObstacleSurface::has_obstacle(in.gap))
           part[4] += -st.lambda_n * (in.gap - in.u_n) * dx;
       });
-    const double moment     = h * h / D * part[0];
-    const double transverse = h * h * c_h / D * part[1];
-    const double membrane   = h * h / Dm * part[3];
-    const double complement = std::abs(part[4]);
-    sums[0] += moment;
-    sums[1] += transverse;
-    sums[4] += membrane;
-    sums[5] += complement;
-    sums[6] += moment + h * h * c_h / D * part[2] + membrane;
-    return moment + transverse + membrane + complement;
+    const double moment = h * h / D * part[0], membrane = h * h / Dm * part[3];
+    return {{moment, h * h * c_h / D * part[1], membrane, std::abs(part[4]),
+             moment + h * h * c_h / D * part[2] + membrane}};
   }
 
 
 
-  void
-  MindlinModel::edge_terms(const std::size_t    c,
-                           const unsigned int   f,
-                           EstimatorScratch    &scratch,
-                           std::vector<double> &eta2,
-                           double              *sums) const
+  MindlinModel::EdgeTerms
+  MindlinModel::edge_terms(
+    const std::size_t                                    c,
+    const unsigned int                                   f,
+    EstimatorScratch                                    &scratch,
+    const std::vector<std::vector<Tensor<1, 2>>>        &shear,
+    const std::vector<unsigned int>                     &grid_index) const
   {
+    EdgeTerms   terms;
     const auto &cell = cell_grid[c];
-    if (!cell->at_boundary(f) && cell->face(f)->has_children())
-      return; // the finer neighbours take this edge
+    // a hanging edge is taken by its finer side, an edge between cells of
+    // one level by the cell of the smaller index
+    if (!cell->at_boundary(f) &&
+        (cell->face(f)->has_children() ||
+         (!cell->neighbor_is_coarser(f) &&
+          cell->neighbor(f)->active_cell_index() < cell->active_cell_index())))
+      return terms;
     const double nu = prm.material.poisson_ratio;
     const double t  = prm.geometry.thickness;
     const double D  = prm.bending_stiffness();
@@ -354,13 +356,9 @@ namespace NitscheContact
                                const Vector<double> &u) {
       FEValues<2> &sv = *scratch.sides[side];
       sv.reinit(k);
-      const auto e = tied_strains(k, u, scratch.element);
       SampledShear sampled;
-      if (settings.shear != Shear::full)
-        {
-          scratch.samples.reinit(k);
-          sampled = sample_shear(tying, e, scratch.samples, scratch.gauss_nodes);
-        }
+      sampled.nodes   = scratch.gauss_nodes;
+      sampled.samples = shear[grid_index[k->active_cell_index()]];
       std::vector<Traction> out(nq);
       for (unsigned int q = 0; q < nq; ++q)
         {
@@ -407,8 +405,7 @@ namespace NitscheContact
 
     cell->get_dof_values(solution, scratch.u);
     std::vector<Traction> jump = tractions(cell, 3 * f, scratch.u);
-    double       weight    = 0.5;
-    unsigned int coarser   = numbers::invalid_unsigned_int;
+    double weight = 0.5;
     // the components that enter: [moment n, moment t, shear, membrane n,
     // membrane t]
     std::array<bool, 5> enters = {{true, true, true, true, true}};
@@ -418,7 +415,7 @@ namespace NitscheContact
         switch (prm.geometry.boundary_condition(cell->face(f)->boundary_id()))
           {
             case EdgeCondition::clamped:
-              return;
+              return terms;
             case EdgeCondition::simply_supported:
               enters = {{true, settings.soft_support, false, false, false}};
               break;
@@ -436,11 +433,11 @@ namespace NitscheContact
         if (cell->neighbor_is_coarser(f))
           {
             const auto [nf, sub] = cell->neighbor_of_coarser_neighbor(f);
-            side    = 3 * nf + 1 + sub;
-            coarser = neighbour->active_cell_index();
+            side = 3 * nf + 1 + sub;
           }
         else
           side = 3 * cell->neighbor_of_neighbor(f);
+        terms.neighbour = neighbour->active_cell_index();
         neighbour->get_dof_values(solution, scratch.v);
         const std::vector<Traction> other =
           tractions(neighbour, side, scratch.v);
@@ -451,7 +448,7 @@ namespace NitscheContact
             jump[q].shear -= other[q].shear;
           }
       }
-    double moment = 0., shear = 0., membrane = 0.;
+    double moment = 0., shear_force = 0., membrane = 0.;
     for (unsigned int q = 0; q < nq; ++q)
       {
         const Tensor<1, 2> &n = scratch.face.normal_vector(q);
@@ -460,25 +457,16 @@ namespace NitscheContact
         moment += (enters[0] * std::pow(jump[q].moment * n, 2) +
                    enters[1] * std::pow(jump[q].moment * tangent, 2)) *
                   dx;
-        shear += enters[2] * std::pow(jump[q].shear, 2) * dx;
+        shear_force += enters[2] * std::pow(jump[q].shear, 2) * dx;
         if (settings.membrane)
           membrane += (enters[3] * std::pow(jump[q].membrane * n, 2) +
                        enters[4] * std::pow(jump[q].membrane * tangent, 2)) *
                       dx;
       }
-    const double terms[3] = {weight * h / D * moment,
-                             weight * h * c_h / D * shear,
-                             weight * h / Dm * membrane};
-    const double total = terms[0] + terms[1] + terms[2];
-    eta2[cell->active_cell_index()] += total;
-    // the coarser neighbour's half (its face has children, so it skips it)
-    if (coarser != numbers::invalid_unsigned_int)
-      eta2[coarser] += total;
-    const double share = coarser != numbers::invalid_unsigned_int ? 2. : 1.;
-    sums[2] += share * terms[0];
-    sums[3] += share * terms[1];
-    sums[4] += share * terms[2];
-    sums[6] += share * total;
+    // each side's share of the edge's terms
+    terms.parts = {{weight * h / D * moment, weight * h * c_h / D * shear_force,
+                    weight * h / Dm * membrane}};
+    return terms;
   }
 
 
@@ -486,24 +474,70 @@ namespace NitscheContact
   ErrorEstimate
   MindlinModel::estimate_error() const
   {
+    // The cells' terms and sampled shear forces, then the edges' (each edge
+    // once, reading the shear of both sides), both in parallel over cells
+    // into per-cell slots; the sums in cell order (independent of the
+    // number of threads).
+    const std::size_t n = cell_grid.size();
+    std::vector<unsigned int> grid_index(triangulation.n_active_cells());
+    for (std::size_t c = 0; c < n; ++c)
+      grid_index[cell_grid[c]->active_cell_index()] = c;
+    std::vector<std::array<double, 5>>      interior(n);
+    std::vector<std::vector<Tensor<1, 2>>>  shear(n);
+    std::vector<std::array<EdgeTerms, 4>>   edges(n);
+    const auto in_parallel = [&](const auto &work) {
+      parallel::apply_to_subranges(
+        std::size_t(0), n,
+        [&](const std::size_t begin, const std::size_t end) {
+          EstimatorScratch scratch(*this);
+          for (std::size_t c = begin; c < end; ++c)
+            work(c, scratch);
+        },
+        32);
+    };
+    in_parallel([&](const std::size_t c, EstimatorScratch &scratch) {
+      interior[c] = cell_residual_terms(c, scratch, shear[c]);
+    });
+    in_parallel([&](const std::size_t c, EstimatorScratch &scratch) {
+      for (const unsigned int f : GeometryInfo<2>::face_indices())
+        edges[c][f] = edge_terms(c, f, scratch, shear, grid_index);
+    });
+
     // sums of the squared parts: moment residual, transverse residual,
     // moment jumps, shear jumps, membrane, complementarity, everything but
     // the contact terms
-    double           sums[7] = {0., 0., 0., 0., 0., 0., 0.};
+    double              sums[7] = {0., 0., 0., 0., 0., 0., 0.};
     std::vector<double> eta2(triangulation.n_active_cells(), 0.);
-    EstimatorScratch scratch(*this);
-    for (std::size_t c = 0; c < cell_grid.size(); ++c)
+    for (std::size_t c = 0; c < n; ++c)
       {
-        eta2[cell_grid[c]->active_cell_index()] +=
-          cell_residual_terms(c, scratch, sums);
-        for (const unsigned int f : GeometryInfo<2>::face_indices())
-          edge_terms(c, f, scratch, eta2, sums);
+        const std::array<double, 5> &k = interior[c];
+        eta2[cell_grid[c]->active_cell_index()] += k[0] + k[1] + k[2] + k[3];
+        sums[0] += k[0];
+        sums[1] += k[1];
+        sums[4] += k[2];
+        sums[5] += k[3];
+        sums[6] += k[4];
+        for (const EdgeTerms &e : edges[c])
+          {
+            const double total = e.parts[0] + e.parts[1] + e.parts[2];
+            // this side's share and, on an interior edge, the other's
+            const double sides =
+              e.neighbour == numbers::invalid_unsigned_int ? 1. : 2.;
+            eta2[cell_grid[c]->active_cell_index()] += total;
+            if (e.neighbour != numbers::invalid_unsigned_int)
+              eta2[e.neighbour] += total;
+            sums[2] += sides * e.parts[0];
+            sums[3] += sides * e.parts[1];
+            sums[4] += sides * e.parts[2];
+            sums[6] += sides * total;
+          }
       }
     ErrorEstimate estimate;
     estimate.cell_indicators.reinit(eta2.size());
     for (std::size_t k = 0; k < eta2.size(); ++k)
       estimate.cell_indicators[k] = std::sqrt(eta2[k]);
-    estimate.estimate      = std::sqrt(std::accumulate(eta2.begin(), eta2.end(), 0.));
+    estimate.estimate =
+      std::sqrt(std::accumulate(eta2.begin(), eta2.end(), 0.));
     estimate.solution_norm = energy_norm(solution);
     estimate.parts = {{"moment_residual", std::sqrt(sums[0])},
                       {"transverse_residual", std::sqrt(sums[1])},

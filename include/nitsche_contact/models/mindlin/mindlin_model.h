@@ -507,20 +507,30 @@ namespace NitscheContact
                  const dealii::Vector<double>                     &u,
                  ElementScratch &scratch) const;
     struct EstimatorScratch;
-    /// The squared interior indicator of cell c (of `cell_grid`), its
-    /// parts added to `sums`.
-    double
-    cell_residual_terms(std::size_t       c,
-                        EstimatorScratch &scratch,
-                        double           *sums) const;
-    /// The squared edge terms of face f of cell c, added to eta2 (the
-    /// coarser neighbour's half too) and to `sums`.
-    void
-    edge_terms(std::size_t          c,
-               unsigned int         f,
-               EstimatorScratch    &scratch,
-               std::vector<double> &eta2,
-               double              *sums) const;
+    /// The squared interior terms of cell c (of `cell_grid`): moment,
+    /// transverse and membrane residual, complementarity, and all but the
+    /// contact terms; its sampled shear force into `shear`.
+    std::array<double, 5>
+    cell_residual_terms(std::size_t                        c,
+                        EstimatorScratch                  &scratch,
+                        std::vector<dealii::Tensor<1, 2>> &shear) const;
+    /// One side's share of the squared terms of an edge (moment, shear,
+    /// membrane jumps) and the cell on its other side (none on the
+    /// boundary), which takes the same share.
+    struct EdgeTerms
+    {
+      std::array<double, 3> parts = {{0., 0., 0.}};
+      unsigned int neighbour = dealii::numbers::invalid_unsigned_int;
+    };
+    /// The terms of face f of cell c, with the sampled shear of every cell
+    /// (`shear`, by `cell_grid` position, found through `grid_index` by
+    /// active cell index); empty for an edge another cell takes.
+    EdgeTerms
+    edge_terms(std::size_t                                          c,
+               unsigned int                                         f,
+               EstimatorScratch                                    &scratch,
+               const std::vector<std::vector<dealii::Tensor<1, 2>>> &shear,
+               const std::vector<unsigned int> &grid_index) const;
 
     // Postprocessing (postprocessing.cc).
     /// The means over the contact points of cell c (of `cell_grid`).
