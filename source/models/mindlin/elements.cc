@@ -11,6 +11,8 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <map>
+#include <numeric>
 
 namespace NitscheContact
 {
@@ -506,15 +508,13 @@ namespace NitscheContact
     // used.
     gsv_bound = 0.;
     ElementScratch scratch(*this);
-    for (std::size_t c = 0; c < cell_grid.size(); ++c)
+    for (const std::size_t c : representative_cells())
       {
         fill_element_data(cell_grid[c], scratch);
         double h = 0.;
         for (unsigned int l = 0; l < GeometryInfo<2>::lines_per_cell; ++l)
           h = std::max(h, cell_grid[c]->line(l)->diameter());
         gsv_bound = std::max(gsv_bound, h * h * gsv_cell_bound(scratch.data));
-        if (uniform_cells)
-          break;
       }
     if (gamma0_is_auto)
       gamma0_in_use = std::max(gamma0, 3. * gsv_bound);
@@ -592,8 +592,70 @@ namespace NitscheContact
   {
     if (uniform_cells)
       return uniform_data;
+    if (!class_data.empty())
+      return class_data[cell_class[c]];
     fill_element_data(cell_grid[c], scratch, with_bulk);
     return scratch.data;
+  }
+
+
+
+  void
+  MindlinModel::classify_cells()
+  {
+    // A cell's class: the positions of its mapping's support points (the
+    // vertices and, for MITC9, the edge and cell centres on their
+    // manifolds) relative to its first vertex, to 1e-9 of the plate's size
+    cell_class.assign(cell_grid.size(), 0);
+    class_representatives.clear();
+    class_data.clear();
+    const double scale = 1e9 / prm.geometry.plate.size();
+    std::map<std::vector<long long>, unsigned int> classes;
+    std::vector<long long>                         key;
+    for (std::size_t c = 0; c < cell_grid.size(); ++c)
+      {
+        const auto     &cell = cell_grid[c];
+        const Point<2>  v0   = cell->vertex(0);
+        std::vector<Point<2>> points;
+        for (const unsigned int v : cell->vertex_indices())
+          points.push_back(cell->vertex(v));
+        if (fe.degree > 1)
+          {
+            for (unsigned int l = 0; l < GeometryInfo<2>::lines_per_cell; ++l)
+              points.push_back(cell->line(l)->center(true));
+            points.push_back(cell->center(true));
+          }
+        key.clear();
+        for (const Point<2> &p : points)
+          for (unsigned int d = 0; d < 2; ++d)
+            key.push_back(std::llround((p[d] - v0[d]) * scale));
+        const auto [it, added] = classes.emplace(key, classes.size());
+        if (added)
+          {
+            if (classes.size() > max_cell_classes)
+              {
+                cell_class.clear();
+                class_representatives.clear();
+                return;
+              }
+            class_representatives.push_back(c);
+          }
+        cell_class[c] = it->second;
+      }
+  }
+
+
+
+  std::vector<std::size_t>
+  MindlinModel::representative_cells() const
+  {
+    if (uniform_cells)
+      return {0};
+    if (!cell_class.empty())
+      return class_representatives;
+    std::vector<std::size_t> all(cell_grid.size());
+    std::iota(all.begin(), all.end(), std::size_t(0));
+    return all;
   }
 
 
@@ -611,6 +673,13 @@ namespace NitscheContact
         ElementScratch scratch(*this);
         fill_element_data(cell_grid[0], scratch);
         uniform_data = std::move(scratch.data);
+      }
+    class_data.clear();
+    for (const std::size_t c : class_representatives)
+      {
+        ElementScratch scratch(*this);
+        fill_element_data(cell_grid[c], scratch);
+        class_data.push_back(std::move(scratch.data));
       }
     compute_point_data();
   }

@@ -222,12 +222,16 @@ namespace NitscheContact
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (unsigned int l = 0; l < GeometryInfo<2>::lines_per_cell; ++l)
         cell_size = std::max(cell_size, cell->line(l)->diameter());
+    cell_class.clear();
+    class_representatives.clear();
+    class_data.clear();
     if (!uniform_cells)
       {
         for (const auto &cell : dof_handler.active_cell_iterators())
           cell_grid.push_back(cell);
         point_cache = std::make_unique<GridTools::Cache<2>>(triangulation,
                                                             mapping);
+        classify_cells();
       }
     else
       index_uniform_grid();

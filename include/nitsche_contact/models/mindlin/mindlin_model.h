@@ -363,8 +363,9 @@ namespace NitscheContact
                       ElementScratch &scratch,
                       bool            with_bulk = true) const;
     /// The element data of cell c (of `cell_grid`): the shared one on a
-    /// uniform grid, else computed into scratch.data (without `with_bulk`
-    /// only the contact points' part).
+    /// uniform grid, its class's on a mesh of few classes of congruent
+    /// cells (adapted Cartesian meshes), else computed into scratch.data
+    /// (without `with_bulk` only the contact points' part).
     const ElementData &
     element_data(std::size_t     c,
                  ElementScratch &scratch,
@@ -380,9 +381,21 @@ namespace NitscheContact
     theta_matrix(const ElementData          &d,
                  unsigned int                q,
                  dealii::FullMatrix<double> &m) const;
-    /// Per cycle: the shared element data (uniform grids) and the gaps.
+    /// Per cycle: the shared element data (uniform grids, classes of
+    /// congruent cells) and the gaps.
     void
     precompute_cell_data();
+    /// setup_dofs() on a mesh that is not a uniform grid: sort the cells
+    /// into classes of translates of each other (cell_class,
+    /// class_representatives), or none when there are more than
+    /// max_cell_classes.
+    void
+    classify_cells();
+    /// The cells whose element data stand for all (compute_gsv_bound()):
+    /// the first of a uniform grid, a representative of each class, or
+    /// every cell.
+    std::vector<std::size_t>
+    representative_cells() const;
     /// 'gsv': gsv_bound and gamma0_in_use on the current mesh.
     void
     compute_gsv_bound();
@@ -645,6 +658,13 @@ namespace NitscheContact
     std::vector<std::vector<double>> shape_values;
     /// the element data of every cell of a uniform grid
     ElementData         uniform_data;
+    /// on other meshes with at most max_cell_classes classes of congruent
+    /// cells: each cell's class, a cell of each class and the classes'
+    /// element data (empty with more classes: data per cell)
+    static constexpr unsigned int max_cell_classes = 64;
+    std::vector<unsigned int>     cell_class;
+    std::vector<std::size_t>      class_representatives;
+    std::vector<ElementData>      class_data;
     std::vector<double> gaps; // [cell*nq + q]
     /// 'gsv': the transverse load f (factor 1) at every contact point,
     /// the constant part of sigma_n = f + div Q_h, [cell*nq + q]
