@@ -23,6 +23,7 @@
 // natural components (free: all; simple support: M_nn, soft: M n; symmetry:
 // M_nt, Q . n, N_nt).
 #include <deal.II/base/parallel.h>
+#include <deal.II/base/polynomial.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/numerics/solution_transfer.h>
@@ -56,26 +57,22 @@ namespace NitscheContact
       return points;
     }
 
-    /// The Lagrange polynomials of the n Gauss points of [0, 1] at s and
-    /// their derivatives.
+    /// The Lagrange polynomials of `basis` (of the Gauss points of [0,
+    /// 1]) at s, l, and their derivatives, dl.
     void
-    gauss_lagrange(const std::vector<double> &nodes, const double s,
-                   std::vector<double> &l, std::vector<double> &dl)
+    gauss_lagrange(const std::vector<Polynomials::Polynomial<double>> &basis,
+                   const double s, std::vector<double> &l,
+                   std::vector<double> &dl)
     {
-      const unsigned int n = nodes.size();
-      l.assign(n, 1.);
-      dl.assign(n, 0.);
-      for (unsigned int k = 0; k < n; ++k)
-        for (unsigned int m = 0; m < n; ++m)
-          if (m != k)
-            {
-              double term = 1. / (nodes[k] - nodes[m]);
-              for (unsigned int j = 0; j < n; ++j)
-                if (j != k && j != m)
-                  term *= (s - nodes[j]) / (nodes[k] - nodes[j]);
-              dl[k] += term;
-              l[k] *= (s - nodes[m]) / (nodes[k] - nodes[m]);
-            }
+      l.resize(basis.size());
+      dl.resize(basis.size());
+      std::vector<double> values(2);
+      for (unsigned int k = 0; k < basis.size(); ++k)
+        {
+          basis[k].value(s, values);
+          l[k]  = values[0];
+          dl[k] = values[1];
+        }
     }
 
     /// The shear strain sampled at the p x p Gauss points of a cell and
@@ -84,16 +81,17 @@ namespace NitscheContact
     /// the value and, with the inverse Jacobian K there, the divergence.
     struct SampledShear
     {
-      std::vector<double>       nodes; ///< the Gauss points of [0, 1]
+      /// the Lagrange polynomials of the Gauss points of [0, 1]
+      const std::vector<Polynomials::Polynomial<double>> *basis = nullptr;
       std::vector<Tensor<1, 2>> samples; ///< [i + p j]
       Tensor<1, 2>
       value(const Point<2> &x) const
       {
         std::vector<double> lx, ly, dx, dy;
-        gauss_lagrange(nodes, x[0], lx, dx);
-        gauss_lagrange(nodes, x[1], ly, dy);
+        gauss_lagrange(*basis, x[0], lx, dx);
+        gauss_lagrange(*basis, x[1], ly, dy);
         Tensor<1, 2>       g;
-        const unsigned int p = nodes.size();
+        const unsigned int p = basis->size();
         for (unsigned int j = 0; j < p; ++j)
           for (unsigned int i = 0; i < p; ++i)
             g += lx[i] * ly[j] * samples[i + p * j];
@@ -103,9 +101,9 @@ namespace NitscheContact
       divergence(const Point<2> &x, const DerivativeForm<1, 2, 2> &K) const
       {
         std::vector<double> lx, ly, dx, dy;
-        gauss_lagrange(nodes, x[0], lx, dx);
-        gauss_lagrange(nodes, x[1], ly, dy);
-        const unsigned int p   = nodes.size();
+        gauss_lagrange(*basis, x[0], lx, dx);
+        gauss_lagrange(*basis, x[1], ly, dy);
+        const unsigned int p   = basis->size();
         double             div = 0.;
         for (unsigned int j = 0; j < p; ++j)
           for (unsigned int i = 0; i < p; ++i)
@@ -126,10 +124,10 @@ namespace NitscheContact
     sample_shear(const MindlinModel::ShearTying        &tying,
                  const std::array<std::vector<double>, 2> &e,
                  const FEValues<2>                        &samples,
-                 const std::vector<double>                &nodes)
+                 const std::vector<Polynomials::Polynomial<double>> &basis)
     {
       SampledShear sampled;
-      sampled.nodes = nodes;
+      sampled.basis = &basis;
       for (unsigned int k = 0; k < samples.n_quadrature_points; ++k)
         sampled.samples.push_back(MindlinModel::ShearTying::strain(
           tying.weights(samples.get_quadrature().point(k)), e,
@@ -165,9 +163,8 @@ namespace NitscheContact
       , u(model.fe.n_dofs_per_cell())
       , v(model.fe.n_dofs_per_cell())
     {
-      const QGauss<1> nodes(model.fe.degree);
-      for (const Point<1> &p : nodes.get_points())
-        gauss_nodes.push_back(p[0]);
+      gauss_basis = Polynomials::generate_complete_Lagrange_basis(
+        QGauss<1>(model.fe.degree).get_points());
       // index 3 f: face f; 3 f + 1 + s: its half s
       for (unsigned int f = 0; f < 4; ++f)
         for (int s = -1; s < 2; ++s)
@@ -188,7 +185,7 @@ namespace NitscheContact
     std::vector<std::unique_ptr<FEValues<2>>> sides;
     /// the shear's sampling points (SampledShear)
     FEValues<2>                               samples;
-    std::vector<double>                       gauss_nodes;
+    std::vector<Polynomials::Polynomial<double>> gauss_basis;
     /// local values of the cell and of a neighbour
     Vector<double>                            u, v;
   };
@@ -246,7 +243,7 @@ namespace NitscheContact
     values.reinit(cell);
     scratch.samples.reinit(cell);
     const SampledShear sampled =
-      sample_shear(tying, e, scratch.samples, scratch.gauss_nodes);
+      sample_shear(tying, e, scratch.samples, scratch.gauss_basis);
     shear = sampled.samples;
     const ElementData &d = element_data(c, scratch.element, false);
     // moment, transverse, transverse without p_h, membrane,
@@ -357,7 +354,7 @@ namespace NitscheContact
       FEValues<2> &sv = *scratch.sides[side];
       sv.reinit(k);
       SampledShear sampled;
-      sampled.nodes   = scratch.gauss_nodes;
+      sampled.basis   = &scratch.gauss_basis;
       sampled.samples = shear[grid_index[k->active_cell_index()]];
       std::vector<Traction> out(nq);
       for (unsigned int q = 0; q < nq; ++q)
