@@ -4,9 +4,10 @@ and the Mindlin plate (MITC9, 'gsv') on an L-shaped plate (re-entrant
 corner) and on the paper's test, each on uniform cycles, on adaptive cycles
 (Bulk fraction 0.3) and on a reference run two uniform refinements finer
 than the finest uniform cycle. The reference reaction is the Aitken
-extrapolation of the reference run's last three cycles (at the re-entrant
-corner the uniform reaction converges too slowly for its finest cycle to
-serve); the error of a cycle is its reaction's relative distance from it
+extrapolation of the reference run's last three cycles when their
+increments contract (at the re-entrant corner the uniform reaction converges
+too slowly for its finest cycle to serve), else that run's finest cycle;
+the error of a cycle is its reaction's relative distance from it
 (the error estimate is printed beside it). Per case: every cycle's DoFs,
 relative estimate, reaction error, Newton iterations and the cumulative
 wall time (the phases of summary.json summed over the cycles), and the DoFs
@@ -116,8 +117,10 @@ try:
         adaptive = run(work, tag + "_adaptive", text % geometry(shape, "adaptive", n_adaptive),
                        graphical=plot is not None)
         f0, f1, f2 = (c["contact_force"] for c in fine[-3:])
-        ref = f2 - (f2 - f1) ** 2 / ((f2 - f1) - (f1 - f0))
-        reference = dict(fine[-1], contact_force=ref)
+        contracting = abs(f2 - f1) < abs(f1 - f0)
+        ref = f2 - (f2 - f1) ** 2 / ((f2 - f1) - (f1 - f0)) if contracting else f2
+        reference = dict(fine[-1], contact_force=ref, extrapolated=contracting,
+                         last_three=(f0, f1, f2))
         for c in uniform + adaptive:
             c["error"] = abs(c["contact_force"] - ref) / ref
         results.append((name, uniform, adaptive, reference))
@@ -125,8 +128,13 @@ finally:
     shutil.rmtree(work, ignore_errors=True)
 
 for name, uniform, adaptive, reference in results:
-    print("\n%s (reference: extrapolated from up to %d DoFs, reaction %.8f)"
-          % (name, reference["n_dofs"], reference["contact_force"]))
+    print("\n%s (reference: %s %d DoFs, reaction %.8f)"
+          % (name, "extrapolated from up to" if reference["extrapolated"] else
+             "the uniform run's increments do not contract: its cycle of",
+             reference["n_dofs"], reference["contact_force"]))
+    f0, f1, f2 = reference["last_three"]
+    print("  its last three reactions %.8f, %.8f, %.8f (relative increments %.2e, %.2e)"
+          % (f0, f1, f2, (f1 - f0) / f1, (f2 - f1) / f2))
     print("%-9s %5s %8s %11s %11s %6s %9s" % ("run", "cycle", "DoFs", "eta/|U|_a",
                                              "reaction e", "its", "seconds"))
     for label, cycles in (("uniform", uniform), ("adaptive", adaptive)):
