@@ -316,12 +316,7 @@ namespace NitscheContact
   {
     ElementData       &d   = scratch.data;
     const unsigned int n   = fe.n_dofs_per_cell();
-    {
-      double h = 0.;
-      for (unsigned int l = 0; l < GeometryInfo<2>::lines_per_cell; ++l)
-        h = std::max(h, cell->line(l)->diameter());
-      set_nitsche_parameters(h, d);
-    }
+    set_nitsche_parameters(longest_side(cell), d);
     const double       nu  = prm.material.poisson_ratio;
     const double       E   = prm.material.youngs_modulus;
     const double       t   = prm.geometry.thickness;
@@ -511,9 +506,7 @@ namespace NitscheContact
     for (const std::size_t c : representative_cells())
       {
         fill_element_data(cell_grid[c], scratch);
-        double h = 0.;
-        for (unsigned int l = 0; l < GeometryInfo<2>::lines_per_cell; ++l)
-          h = std::max(h, cell_grid[c]->line(l)->diameter());
+        const double h = longest_side(cell_grid[c]);
         gsv_bound = std::max(gsv_bound, h * h * gsv_cell_bound(scratch.data));
       }
     if (gamma0_is_auto)

@@ -231,10 +231,8 @@ namespace NitscheContact
     const double       D    = prm.bending_stiffness();
     const double       S    = settings.shear_factor * mu * t;
     const double       Dm   = prm.material.youngs_modulus * t / (1. - nu * nu);
-    double             hK   = 0.;
-    for (unsigned int l = 0; l < GeometryInfo<2>::lines_per_cell; ++l)
-      hK = std::max(hK, cell->line(l)->diameter());
-    const double h = hK / fe.degree, c_h = h * h + D / S;
+    const double       h    = longest_side(cell) / fe.degree;
+    const double       c_h  = h * h + D / S;
 
     cell->get_dof_values(solution, scratch.u);
     const Vector<double> &u = scratch.u;

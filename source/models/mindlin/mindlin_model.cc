@@ -220,8 +220,7 @@ namespace NitscheContact
     cell_at.clear();
     cell_size = 0.;
     for (const auto &cell : dof_handler.active_cell_iterators())
-      for (unsigned int l = 0; l < GeometryInfo<2>::lines_per_cell; ++l)
-        cell_size = std::max(cell_size, cell->line(l)->diameter());
+      cell_size = std::max(cell_size, longest_side(cell));
     cell_class.clear();
     class_representatives.clear();
     class_data.clear();

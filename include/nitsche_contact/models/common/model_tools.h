@@ -12,6 +12,7 @@
 
 #include <nitsche_contact/parameters.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -87,6 +88,16 @@ namespace NitscheContact
   mark_bulk_fraction(dealii::Triangulation<2>    &triangulation,
                      const dealii::Vector<float> &indicators,
                      double                       fraction);
+  /// h_K, the longest side of a cell (the models' cell size).
+  template <class CellIterator>
+  double
+  longest_side(const CellIterator &cell)
+  {
+    double h = 0.;
+    for (unsigned int l = 0; l < dealii::GeometryInfo<2>::lines_per_cell; ++l)
+      h = std::max(h, cell->line(l)->diameter());
+    return h;
+  }
 } // namespace NitscheContact
 
 #endif

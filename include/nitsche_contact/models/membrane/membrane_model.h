@@ -134,17 +134,6 @@ namespace NitscheContact
 
     // ----- mesh and space (membrane_model.cc)
 
-    /// h_K, the longest side of a cell.
-    template <class CellIterator>
-    static double
-    longest_side(const CellIterator &cell)
-    {
-      double h = 0.;
-      for (unsigned int l = 0; l < dealii::GeometryInfo<2>::lines_per_cell; ++l)
-        h = std::max(h, cell->line(l)->diameter());
-      return h;
-    }
-
     void
     make_grid();
     /// The space, the constraints, the matrix and the cell data of the
